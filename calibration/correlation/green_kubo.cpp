@@ -1,0 +1,242 @@
+#include "correlation/green_kubo.hpp"
+
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+namespace sdf::correlation
+{
+
+std::vector<double> runningIntegral
+(
+    const std::vector<double>& times,
+    const std::vector<double>& values
+)
+{
+    if (times.size() != values.size() || times.empty())
+    {
+        throw std::invalid_argument
+        (
+            "runningIntegral: " + std::to_string(times.size()) + " times and "
+          + std::to_string(values.size()) + " values"
+        );
+    }
+    std::vector<double> integral(times.size(), 0.0);
+    for (std::size_t i = 1; i < times.size(); ++i)
+    {
+        const double dt = times[i] - times[i - 1];
+        if (!(dt > 0.0))
+        {
+            throw std::invalid_argument("runningIntegral: times must increase");
+        }
+        integral[i] = integral[i - 1] + 0.5 * dt * (values[i] + values[i - 1]);
+    }
+    return integral;
+}
+
+std::vector<double> uniformTimes(std::size_t count, double dt)
+{
+    std::vector<double> t(count);
+    for (std::size_t k = 0; k < count; ++k)
+    {
+        t[k] = dt * static_cast<double>(k);
+    }
+    return t;
+}
+
+namespace
+{
+
+// Mean of f over [times[first], times[last]] by the trapezoid rule (the
+// window average of a running integral); f itself when first == last.
+double windowMean
+(
+    const std::vector<double>& times,
+    const std::vector<double>& f,
+    std::size_t first,
+    std::size_t last
+)
+{
+    if (first == last)
+    {
+        return f[first];
+    }
+    double area = 0.0;
+    for (std::size_t i = first + 1; i <= last; ++i)
+    {
+        area += 0.5 * (times[i] - times[i - 1]) * (f[i] + f[i - 1]);
+    }
+    return area / (times[last] - times[first]);
+}
+
+struct Plateau
+{
+    std::size_t first = 0;
+    std::size_t last = 0;
+    bool found = false;
+    double value = 0.0;
+};
+
+std::vector<std::size_t> allBlocks(std::size_t count)
+{
+    std::vector<std::size_t> all(count);
+    for (std::size_t b = 0; b < count; ++b)
+    {
+        all[b] = b;
+    }
+    return all;
+}
+
+// The plateau of the mean running integral of the chosen blocks: the first
+// t_p after which it stays within noiseMultiple standard errors of I(t_p)
+// over [t_p, (1 + windowFactor) t_p]; value = window mean of the mean.
+Plateau findPlateau
+(
+    const std::vector<double>& times,
+    const std::vector<std::vector<double>>& blockIntegrals,
+    const std::vector<std::size_t>& chosen,
+    const PlateauSettings& settings
+)
+{
+    const std::size_t n = times.size();
+    std::vector<double> I(n), sigma(n), column(chosen.size());
+    for (std::size_t k = 0; k < n; ++k)
+    {
+        for (std::size_t i = 0; i < chosen.size(); ++i)
+        {
+            column[i] = blockIntegrals[chosen[i]][k];
+        }
+        const Estimate e = meanAndStandardError(column);
+        I[k] = e.value;
+        sigma[k] = e.standardError;
+    }
+
+    Plateau plateau;
+    std::size_t last = 0;
+    for (std::size_t k = 1; k < n && !plateau.found; ++k)
+    {
+        if (times[k] < settings.earliestTime)
+        {
+            continue;
+        }
+        const double end = (1.0 + settings.windowFactor) * times[k];
+        if (times[n - 1] < end)
+        {
+            break;   // no full window left in the data
+        }
+        bool flat = true;
+        for (last = k; last < n && times[last] <= end && flat; ++last)
+        {
+            flat = std::abs(I[last] - I[k]) <= settings.noiseMultiple * sigma[last];
+        }
+        if (flat)
+        {
+            plateau.first = k;
+            plateau.last = last - 1;
+            plateau.found = plateau.last > k;
+        }
+    }
+    if (!plateau.found)
+    {
+        // The latest full window: the best the data can give, flagged.
+        plateau.last = n - 1;
+        plateau.first = n - 1;
+        const double begin = times[n - 1] / (1.0 + settings.windowFactor);
+        while (plateau.first > 0 && times[plateau.first - 1] >= begin)
+        {
+            --plateau.first;
+        }
+    }
+    plateau.value = windowMean(times, I, plateau.first, plateau.last);
+    return plateau;
+}
+
+} // namespace
+
+GreenKuboResult greenKubo
+(
+    const std::vector<double>& times,
+    const std::vector<std::vector<double>>& blockCorrelations,
+    const PlateauSettings& settings
+)
+{
+    const std::size_t blocks = blockCorrelations.size();
+    if (blocks < 2)
+    {
+        throw std::invalid_argument
+        (
+            "greenKubo: needs >= 2 independent blocks or replicas for an error, got "
+          + std::to_string(blocks)
+        );
+    }
+    const std::size_t n = times.size();
+    for (const std::vector<double>& c : blockCorrelations)
+    {
+        if (c.size() != n)
+        {
+            throw std::invalid_argument("greenKubo: a block's correlation does not match the time grid");
+        }
+    }
+
+    std::vector<std::vector<double>> blockIntegrals;
+    blockIntegrals.reserve(blocks);
+    for (const std::vector<double>& c : blockCorrelations)
+    {
+        blockIntegrals.push_back(runningIntegral(times, c));
+    }
+
+    GreenKuboResult result;
+    result.times = times;
+    result.meanCorrelation.resize(n);
+    result.correlationError.resize(n);
+    result.meanRunningIntegral.resize(n);
+    result.runningIntegralError.resize(n);
+    std::vector<double> column(blocks);
+    for (std::size_t k = 0; k < n; ++k)
+    {
+        for (std::size_t b = 0; b < blocks; ++b)
+        {
+            column[b] = blockCorrelations[b][k];
+        }
+        const Estimate c = meanAndStandardError(column);
+        for (std::size_t b = 0; b < blocks; ++b)
+        {
+            column[b] = blockIntegrals[b][k];
+        }
+        const Estimate i = meanAndStandardError(column);
+        result.meanCorrelation[k] = c.value;
+        result.correlationError[k] = c.standardError;
+        result.meanRunningIntegral[k] = i.value;
+        result.runningIntegralError[k] = i.standardError;
+    }
+
+    const Plateau all = findPlateau(times, blockIntegrals, allBlocks(blocks), settings);
+    result.plateauTime = times[all.first];
+    result.windowEnd = times[all.last];
+    result.plateauFound = all.found;
+    result.integral.value = all.value;
+    result.integral.samples = blocks;
+
+    // Jackknife over blocks of the whole procedure, plateau search included:
+    // the plateau time is chosen from the same noisy data, and that choice
+    // adds scatter which a block error at a fixed window would miss.
+    double squares = 0.0;
+    for (std::size_t left = 0; left < blocks; ++left)
+    {
+        std::vector<std::size_t> subset;
+        for (std::size_t b = 0; b < blocks; ++b)
+        {
+            if (b != left)
+            {
+                subset.push_back(b);
+            }
+        }
+        const Plateau jack = findPlateau(times, blockIntegrals, subset, settings);
+        squares += (jack.value - all.value) * (jack.value - all.value);
+    }
+    const double count = static_cast<double>(blocks);
+    result.integral.standardError = std::sqrt((count - 1.0) / count * squares);
+    return result;
+}
+
+} // namespace sdf::correlation

@@ -1,0 +1,71 @@
+// Green-Kubo integrals of correlation functions with a plateau criterion and
+// a statistical error from independent blocks or replicas.
+//
+//   D = int_0^inf < v_x(0) v_x(t) > dt        (seed eq 14, per component)
+//   eta = int_0^inf < J_xy(0) J_xy(t) > dt    (seed eq 8, up to the caller's
+//                                              volume / temperature factor)
+#ifndef SDF_CORRELATION_GREEN_KUBO_HPP
+#define SDF_CORRELATION_GREEN_KUBO_HPP
+
+#include "correlation/statistics.hpp"
+
+#include <cstddef>
+#include <vector>
+
+namespace sdf::correlation
+{
+
+//- Cumulative trapezoid integral I(t_i) = int_{t_0}^{t_i} f dt on any
+//  increasing grid (uniform FFT lags or log-spaced multiple-tau lags).
+std::vector<double> runningIntegral
+(
+    const std::vector<double>& times,
+    const std::vector<double>& values
+);
+
+//- Uniform grid t_k = k dt, k = 0 .. count-1.
+std::vector<double> uniformTimes(std::size_t count, double dt);
+
+struct PlateauSettings
+{
+    //- The running integral is flat when |I(t') - I(t_p)| <= noiseMultiple *
+    //  (standard error of I(t')) for every t' in the window after t_p.
+    double noiseMultiple = 1.0;
+    //- The window is [t_p, (1 + windowFactor) t_p]: long enough to see a
+    //  slow tail, scaled so that it means the same for any time unit.
+    double windowFactor = 1.0;
+    //- Ignore plateau candidates before this time (e.g. to skip t = 0).
+    double earliestTime = 0.0;
+};
+
+struct GreenKuboResult
+{
+    //- Plateau value: mean of the block-mean running integral over the
+    //  window. Standard error: jackknife over blocks of the whole procedure
+    //  (each leave-one-out set finds its own plateau), so the scatter that
+    //  the data-driven choice of t_p adds is included. Measured on
+    //  Ornstein-Uhlenbeck replicas it is honest to slightly conservative.
+    Estimate integral;
+    double plateauTime = 0.0;   // t_p
+    double windowEnd = 0.0;     // (1 + windowFactor) t_p, clipped to the data
+    //- false: no time where the integral is flat within its noise (run longer,
+    //  or use more blocks); the integral then reports the last window anyway.
+    bool plateauFound = false;
+
+    std::vector<double> times;
+    std::vector<double> meanCorrelation, correlationError;
+    std::vector<double> meanRunningIntegral, runningIntegralError;
+};
+
+//- blockCorrelations[b][k]: the correlation function at times[k] measured on
+//  block (or replica) b; >= 2 independent blocks are needed for an error.
+GreenKuboResult greenKubo
+(
+    const std::vector<double>& times,
+    const std::vector<std::vector<double>>& blockCorrelations,
+    const PlateauSettings& settings = PlateauSettings()
+);
+
+} // namespace sdf::correlation
+
+#endif

@@ -1,0 +1,52 @@
+// Statistical estimates with honest standard errors: block averaging of one
+// trajectory and combination of independent replicas.
+#ifndef SDF_CORRELATION_STATISTICS_HPP
+#define SDF_CORRELATION_STATISTICS_HPP
+
+#include <cstddef>
+#include <vector>
+
+namespace sdf::correlation
+{
+
+//- A value with its standard error and the number of independent samples
+//  (blocks or replicas) the error was estimated from.
+struct Estimate
+{
+    double value = 0.0;
+    double standardError = 0.0;
+    std::size_t samples = 0;
+};
+
+//- Mean and standard error of the mean of independent samples
+//  (standard error = sample standard deviation / sqrt(n); 0 for n = 1).
+Estimate meanAndStandardError(const std::vector<double>& samples);
+
+//- Mean of a correlated time series with the standard error from the scatter
+//  of blockCount contiguous block means (a trailing remainder shorter than a
+//  block is dropped so that all blocks have equal weight). The blocks must be
+//  longer than the correlation time for the error to be honest.
+Estimate blockAverage(const std::vector<double>& series, std::size_t blockCount);
+
+//- Half-open index range [begin, end) of block b when n samples are cut into
+//  blockCount equal contiguous blocks (remainder dropped at the end).
+struct IndexRange
+{
+    std::size_t begin = 0;
+    std::size_t end = 0;
+    std::size_t size() const { return end - begin; }
+};
+IndexRange blockRange(std::size_t n, std::size_t blockCount, std::size_t block);
+
+//- Combine estimates from independent replicas: mean of the values and the
+//  standard error from their spread (does not trust the replicas' own errors;
+//  needs >= 2 replicas for a non-zero error).
+Estimate combineReplicas(const std::vector<Estimate>& replicas);
+
+//- Inverse-variance weighted mean of independent estimates, trusting their
+//  reported errors (all standard errors must be > 0).
+Estimate inverseVarianceMean(const std::vector<Estimate>& estimates);
+
+} // namespace sdf::correlation
+
+#endif
