@@ -1,0 +1,92 @@
+/*---------------------------------------------------------------------------*\
+  =========                 |
+  \\      /  F ield         | segregationDegradationFoam
+   \\    /   O peration     |
+    \\  /    A nd           |
+     \\/     M anipulation  |
+-------------------------------------------------------------------------------
+Application
+    segregationDegradationFoam
+
+Group
+    grpMultiphaseSolvers
+
+Description
+    Transient solver for the segregation (and, later, degradation) of a
+    granular mixture carried by a bulk flow. For every species i
+    (docs/equations.md, seed eq 4):
+
+        ddt(n_i) + div(phi n_i) + div(J_D,i + J_S,i + J_P,i) = B_i
+
+    phi and U from the bulkFlow model, J_D = -D grad n_i with the mixture
+    diffusivity (implicit), J_S (kinetic sieving) and J_P (percolation) as
+    explicit, bounded pairwise exchange fluxes, B_i the breakage source.
+    Every mechanism is a run-time selected model in
+    constant/granularProperties; `none` assembles nothing.
+
+\*---------------------------------------------------------------------------*/
+
+#include "fvCFD.H"
+#include "granularMixture.H"
+#include "bulkFlowModel.H"
+#include "granularTemperatureModel.H"
+#include "diffusivityModel.H"
+#include "kineticSievingModel.H"
+#include "percolationModel.H"
+#include "breakageModel.H"
+#include "segregationFlux.H"
+#include "outletComposition.H"
+#include "wallFvPatch.H"
+
+// * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
+
+int main(int argc, char *argv[])
+{
+    argList::addNote
+    (
+        "Transient solver for segregation and degradation of granular"
+        " mixtures (one n.<species> field per species)."
+    );
+
+    #include "postProcess.H"
+
+    #include "addCheckCaseOptions.H"
+    #include "setRootCaseLists.H"
+    #include "createTime.H"
+    #include "createMesh.H"
+    #include "createControls.H"
+    #include "createFields.H"
+
+    // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
+
+    Info<< "\nStarting time loop\n" << endl;
+
+    while (runTime.run())
+    {
+        #include "readControls.H"
+        #include "courantNumbers.H"
+        #include "setDeltaT.H"
+
+        ++runTime;
+
+        Info<< "Time = " << runTime.timeName() << nl << endl;
+
+        #include "updateTransport.H"
+        #include "nEqns.H"
+
+        outlets.write(bulkFlow->phi());
+
+        #include "writeDerivedFields.H"
+
+        runTime.write();
+
+        runTime.printExecutionTime(Info);
+    }
+
+    Info<< "End\n" << endl;
+
+    return 0;
+}
+
+
+// ************************************************************************* //

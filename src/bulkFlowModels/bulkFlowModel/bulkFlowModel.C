@@ -1,0 +1,110 @@
+/*---------------------------------------------------------------------------*\
+  =========                 |
+  \\      /  F ield         | segregationDegradationFoam
+   \\    /   O peration     |
+    \\  /    A nd           |
+     \\/     M anipulation  |
+\*---------------------------------------------------------------------------*/
+
+#include "bulkFlowModel.H"
+#include "fvc.H"
+#include "wallFvPatch.H"
+#include "calculatedFvPatchFields.H"
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+namespace Foam
+{
+    defineTypeNameAndDebug(bulkFlowModel, 0);
+    defineRunTimeSelectionTable(bulkFlowModel, dictionary);
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::bulkFlowModel::bulkFlowModel
+(
+    const word& type,
+    const dictionary& dict,
+    const granularMixture& mixture,
+    const bool readU
+)
+:
+    mixture_(mixture),
+    coeffs_(dict.optionalSubDict(type + "Coeffs")),
+    U_
+    (
+        IOobject
+        (
+            "U",
+            mixture.mesh().time().timeName(),
+            mixture.mesh(),
+            IOobject::NO_READ,
+            IOobject::AUTO_WRITE
+        ),
+        readU
+      ? tmp<volVectorField>
+        (
+            new volVectorField
+            (
+                IOobject
+                (
+                    "U",
+                    mixture.mesh().time().timeName(),
+                    mixture.mesh(),
+                    IOobject::MUST_READ,
+                    IOobject::NO_WRITE,
+                    false
+                ),
+                mixture.mesh()
+            )
+        )
+      : volVectorField::New
+        (
+            "U",
+            mixture.mesh(),
+            dimensionedVector("v", dimVelocity, Zero),
+            calculatedFvPatchVectorField::typeName
+        )
+    ),
+    phi_
+    (
+        IOobject
+        (
+            "phi",
+            mixture.mesh().time().timeName(),
+            mixture.mesh(),
+            IOobject::NO_READ,
+            IOobject::NO_WRITE
+        ),
+        mixture.mesh(),
+        dimensionedScalar("s", dimVolume/dimTime, Zero)
+    )
+{}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::bulkFlowModel::updateFluxFromU()
+{
+    phi_ = fvc::flux(U_);
+
+    // Nothing crosses a wall, whatever value U has there
+    const fvMesh& mesh = mixture_.mesh();
+    forAll(mesh.boundary(), patchi)
+    {
+        if (isA<wallFvPatch>(mesh.boundary()[patchi]))
+        {
+            phi_.boundaryFieldRef()[patchi] = Zero;
+        }
+    }
+}
+
+
+Foam::tmp<Foam::volScalarField> Foam::bulkFlowModel::gammaDot() const
+{
+    return sqrt(2.0)*mag(symm(fvc::grad(U_)));
+}
+
+
+// ************************************************************************* //

@@ -1,0 +1,390 @@
+/*---------------------------------------------------------------------------*\
+  =========                 |
+  \\      /  F ield         | segregationDegradationFoam
+   \\    /   O peration     |
+    \\  /    A nd           |
+     \\/     M anipulation  |
+\*---------------------------------------------------------------------------*/
+
+#include "kinematic.H"
+#include "addToRunTimeSelectionTable.H"
+#include "fvm.H"
+#include "fvc.H"
+#include "convectionScheme.H"
+#include "laplacianScheme.H"
+#include "IStringStream.H"
+#include "uniformDimensionedFields.H"
+#include "zeroGradientFvPatchFields.H"
+#include "fixedValueFvPatchFields.H"
+#include "mixedFvPatchFields.H"
+#include "wallFvPatch.H"
+#include "mathematicalConstants.H"
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+namespace Foam
+{
+namespace bulkFlowModels
+{
+    defineTypeNameAndDebug(kinematic, 0);
+    addToRunTimeSelectionTable(bulkFlowModel, kinematic, dictionary);
+}
+}
+
+
+// * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * * //
+
+namespace
+{
+
+// Solver controls from fvSolution if given there, else robust defaults
+Foam::dictionary solverControls
+(
+    const Foam::fvMesh& mesh,
+    const Foam::word& name,
+    const bool symmetric
+)
+{
+    if (mesh.solutionDict().subOrEmptyDict("solvers").found(name))
+    {
+        return mesh.solverDict(name);
+    }
+    Foam::dictionary d;
+    d.add("solver", symmetric ? "PCG" : "PBiCGStab");
+    d.add("preconditioner", symmetric ? "DIC" : "DILU");
+    d.add("tolerance", 1e-12);
+    d.add("relTol", 0.0);
+    d.add("maxIter", 5000);
+    return d;
+}
+
+} // End anonymous namespace
+
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+void Foam::bulkFlowModels::kinematic::readDischargeRate()
+{
+    const fvMesh& mesh = mixture_.mesh();
+
+    scalar meshOutletArea = 0;
+    for (const label patchi : outletPatches_)
+    {
+        meshOutletArea += gSum(mesh.magSf().boundaryField()[patchi]);
+    }
+
+    const word rateType(coeffs_.get<word>("dischargeRate"));
+
+    if (rateType == "given")
+    {
+        Q_ = coeffs_.get<scalar>("Q");
+        fullOutletArea_ =
+            coeffs_.getOrDefault<scalar>("fullOutletArea", meshOutletArea);
+    }
+    else if (rateType == "beverloo")
+    {
+        const dictionary& bev = coeffs_.subDict("beverlooCoeffs");
+        const scalar C = bev.getOrDefault<scalar>("C", 0.58);
+        const scalar k = bev.getOrDefault<scalar>("k", 1.5);
+        const scalar D0 = bev.get<scalar>("D0");
+
+        uniformDimensionedVectorField g
+        (
+            IOobject
+            (
+                "g",
+                mesh.time().constant(),
+                mesh,
+                IOobject::MUST_READ,
+                IOobject::NO_WRITE,
+                false
+            )
+        );
+
+        // Mean diameter of the initial mixture, weighted by solids volume
+        const volScalarField dMean(mixture_.dMean());
+        const scalar solids = gSum(mixture_.nTotal().primitiveField()*mesh.V());
+        const scalar d =
+            solids > VSMALL
+          ? gSum(dMean.primitiveField()*mixture_.nTotal().primitiveField()*mesh.V())
+           /solids
+          : average(dMean.primitiveField());
+
+        if (!(D0 - k*d > 0))
+        {
+            FatalIOErrorInFunction(bev)
+                << "Beverloo: D0 - k d = " << D0 << " - " << k << "*" << d
+                << " <= 0: the outlet (D0) is too small for the particles"
+                << nl << exit(FatalIOError);
+        }
+
+        Q_ = C*sqrt(mag(g.value()))*pow(D0 - k*d, 2.5);
+
+        if (bev.found("hopperHalfAngle"))
+        {
+            const scalar theta =
+                degToRad(bev.get<scalar>("hopperHalfAngle"));
+            Q_ *= pow(tan(theta), -0.35);
+        }
+        fullOutletArea_ = bev.getOrDefault<scalar>
+        (
+            "fullOutletArea",
+            constant::mathematical::pi*sqr(D0)/4
+        );
+        Info<< "    Beverloo discharge rate Q = " << Q_
+            << " m3/s (bulk volume, full outlet), mean d = " << d << nl;
+    }
+    else
+    {
+        FatalIOErrorInFunction(coeffs_)
+            << "Unknown dischargeRate '" << rateType
+            << "'; valid: (beverloo given)" << nl << exit(FatalIOError);
+    }
+
+    if (!(Q_ > 0) || !(fullOutletArea_ > 0) || !(meshOutletArea > 0))
+    {
+        FatalIOErrorInFunction(coeffs_)
+            << "Discharge rate Q " << Q_ << ", fullOutletArea "
+            << fullOutletArea_ << " and the outlet patches' area "
+            << meshOutletArea << " must all be > 0" << nl
+            << exit(FatalIOError);
+    }
+
+    // The share of the geometry the mesh holds (e.g. a wedge)
+    Q_ *= meshOutletArea/fullOutletArea_;
+}
+
+
+void Foam::bulkFlowModels::kinematic::solveVelocity()
+{
+    const fvMesh& mesh = mixture_.mesh();
+
+    uniformDimensionedVectorField g
+    (
+        IOobject
+        (
+            "g",
+            mesh.time().constant(),
+            mesh,
+            IOobject::MUST_READ,
+            IOobject::NO_WRITE,
+            false
+        )
+    );
+    if (mag(g.value()) < VSMALL)
+    {
+        FatalErrorInFunction
+            << "constant/g is zero: the kinematic model needs the direction"
+            << " of gravity" << nl << exit(FatalError);
+    }
+    const vector gHat(g.value()/mag(g.value()));
+
+    // Downward speed v: 1 on the outlets (scaled later), 0 on downward
+    // facing walls (a flat base), no horizontal flux on other walls
+    wordList vTypes
+    (
+        mesh.boundary().size(),
+        zeroGradientFvPatchScalarField::typeName
+    );
+    for (const label patchi : outletPatches_)
+    {
+        vTypes[patchi] = fixedValueFvPatchScalarField::typeName;
+    }
+    forAll(mesh.boundary(), patchi)
+    {
+        if (isA<wallFvPatch>(mesh.boundary()[patchi]))
+        {
+            vTypes[patchi] = mixedFvPatchScalarField::typeName;
+        }
+    }
+
+    volScalarField v
+    (
+        IOobject
+        (
+            "vKinematic",
+            mesh.time().timeName(),
+            mesh,
+            IOobject::NO_READ,
+            IOobject::NO_WRITE,
+            false
+        ),
+        mesh,
+        dimensionedScalar("s", dimVelocity, Zero),
+        vTypes
+    );
+
+    forAll(mesh.boundary(), patchi)
+    {
+        fvPatchScalarField& vp = v.boundaryFieldRef()[patchi];
+        if (isA<fixedValueFvPatchScalarField>(vp))
+        {
+            vp == scalar(1);
+        }
+        else if (isA<mixedFvPatchScalarField>(vp))
+        {
+            mixedFvPatchScalarField& mp =
+                refCast<mixedFvPatchScalarField>(vp);
+            const vectorField nf(mesh.boundary()[patchi].nf());
+            mp.refValue() = 0;
+            mp.refGrad() = 0;
+            mp.valueFraction() = pos0((nf & gHat) - 0.9);
+        }
+    }
+
+    const surfaceScalarField phiUp("phiUp", -(mesh.Sf() & gHat));
+    const surfaceTensorField Bh
+    (
+        IOobject
+        (
+            "Bh",
+            mesh.time().timeName(),
+            mesh,
+            IOobject::NO_READ,
+            IOobject::NO_WRITE,
+            false
+        ),
+        mesh,
+        dimensionedTensor("t", dimLength, B_*(I - sqr(gHat)))
+    );
+
+    tmp<fv::convectionScheme<scalar>> upwindScheme
+    (
+        fv::convectionScheme<scalar>::New
+        (
+            mesh,
+            phiUp,
+            IStringStream("Gauss upwind")()
+        )
+    );
+    tmp<fv::laplacianScheme<scalar, tensor>> lapScheme
+    (
+        fv::laplacianScheme<scalar, tensor>::New
+        (
+            mesh,
+            IStringStream("Gauss linear corrected")()
+        )
+    );
+
+    for (int corr = 0; corr < 3; ++corr)
+    {
+        fvScalarMatrix vEqn
+        (
+            upwindScheme->fvmDiv(phiUp, v)
+          - lapScheme->fvmLaplacian(Bh, v)
+        );
+        vEqn.solve(solverControls(mesh, "vKinematic", false));
+    }
+
+    U_ = dimensionedScalar("s", dimLength, B_)*((I - sqr(gHat)) & fvc::grad(v))
+       + v*gHat;
+    U_.correctBoundaryConditions();
+    updateFluxFromU();
+
+    // Project the flux onto a discretely divergence-free one
+    wordList pTypes
+    (
+        mesh.boundary().size(),
+        zeroGradientFvPatchScalarField::typeName
+    );
+    forAll(mesh.boundary(), patchi)
+    {
+        const fvPatch& p = mesh.boundary()[patchi];
+        if (!p.coupled() && !isA<wallFvPatch>(p) && p.type() == "patch")
+        {
+            pTypes[patchi] = fixedValueFvPatchScalarField::typeName;
+        }
+    }
+    volScalarField pK
+    (
+        IOobject
+        (
+            "pKinematic",
+            mesh.time().timeName(),
+            mesh,
+            IOobject::NO_READ,
+            IOobject::NO_WRITE,
+            false
+        ),
+        mesh,
+        dimensionedScalar("s", dimArea/dimTime, Zero),
+        pTypes
+    );
+
+    const dictionary pControls(solverControls(mesh, "pKinematic", true));
+    const surfaceScalarField phiNT(phi_);
+    for (int corr = 0; corr < 4; ++corr)
+    {
+        fvScalarMatrix pEqn
+        (
+            fvm::laplacian(pK, "laplacian(pKinematic)")
+         == fvc::div(phiNT)
+        );
+        pEqn.solve(pControls);
+        phi_ = phiNT - pEqn.flux();
+    }
+
+    // Scale to the discharge rate
+    scalar outflow = 0;
+    for (const label patchi : outletPatches_)
+    {
+        outflow += gSum(phi_.boundaryField()[patchi]);
+    }
+    if (!(outflow > 0))
+    {
+        FatalErrorInFunction
+            << "The kinematic flow leaves through the outlet patches at rate "
+            << outflow << ": check outletPatches and constant/g" << nl
+            << exit(FatalError);
+    }
+    phi_ *= Q_/outflow;
+
+    U_ = fvc::reconstruct(phi_);
+    U_.correctBoundaryConditions();
+
+    const volScalarField divPhi(fvc::div(phi_));
+    Info<< "    kinematic bulk flow: outlet flux " << Q_
+        << " m3/s on the mesh, max |div(phi)|*V/Q = "
+        << gMax(mag(divPhi.primitiveField())*mesh.V())/Q_ << nl << endl;
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::bulkFlowModels::kinematic::kinematic
+(
+    const dictionary& dict,
+    const granularMixture& mixture
+)
+:
+    bulkFlowModel(typeName, dict, mixture, false),
+    B_(coeffs_.get<scalar>("B")),
+    outletPatches_(),
+    Q_(0),
+    fullOutletArea_(0)
+{
+    const fvMesh& mesh = mixture.mesh();
+
+    if (!(B_ > 0))
+    {
+        FatalIOErrorInFunction(coeffs_)
+            << "Kinematic constant 'B " << B_ << "' must be > 0 [m]" << nl
+            << exit(FatalIOError);
+    }
+
+    const wordRes outletNames(coeffs_.get<wordRes>("outletPatches"));
+    outletPatches_ =
+        mesh.boundaryMesh().patchSet(outletNames).sortedToc();
+    if (outletPatches_.empty())
+    {
+        FatalIOErrorInFunction(coeffs_)
+            << "outletPatches " << outletNames << " match no patch; patches: "
+            << mesh.boundaryMesh().names() << nl << exit(FatalIOError);
+    }
+
+    readDischargeRate();
+    solveVelocity();
+}
+
+
+// ************************************************************************* //

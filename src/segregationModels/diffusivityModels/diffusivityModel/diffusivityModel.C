@@ -1,0 +1,78 @@
+/*---------------------------------------------------------------------------*\
+  =========                 |
+  \\      /  F ield         | segregationDegradationFoam
+   \\    /   O peration     |
+    \\  /    A nd           |
+     \\/     M anipulation  |
+\*---------------------------------------------------------------------------*/
+
+#include "diffusivityModel.H"
+#include "zeroGradientFvPatchFields.H"
+
+namespace Foam
+{
+    defineTypeNameAndDebug(diffusivityModel, 0);
+    defineRunTimeSelectionTable(diffusivityModel, dictionary);
+}
+
+
+Foam::diffusivityModel::diffusivityModel
+(
+    const word& type,
+    const dictionary& dict,
+    const granularMixture& mixture
+)
+:
+    mixture_(mixture),
+    coeffs_(dict.optionalSubDict(type + "Coeffs"))
+{}
+
+
+Foam::tmp<Foam::volScalarField> Foam::diffusivityModel::D
+(
+    const label i,
+    const volScalarField& T
+) const
+{
+    tmp<volScalarField> tD(Dlaw(i, T)*mixture_.presence());
+    tD.ref().rename("D." + mixture_.names()[i]);
+    return tD;
+}
+
+
+Foam::tmp<Foam::volScalarField> Foam::diffusivityModel::Dmixture
+(
+    const volScalarField& T
+) const
+{
+    const label N = mixture_.size();
+
+    if (N == 1)
+    {
+        return D(0, T);
+    }
+
+    tmp<volScalarField> tDmix
+    (
+        volScalarField::New
+        (
+            "D",
+            mixture_.mesh(),
+            dimensionedScalar("s", dimArea/dimTime, Zero),
+            zeroGradientFvPatchScalarField::typeName
+        )
+    );
+    volScalarField& Dmix = tDmix.ref();
+
+    for (label i = 0; i < N; ++i)
+    {
+        Dmix += (1 - mixture_.c(i))*D(i, T)/scalar(N - 1);
+    }
+
+    // Empty cells: c_i = 0 gives sum_i D_i/(N-1), already 0 by presence
+    Dmix.correctBoundaryConditions();
+    return tDmix;
+}
+
+
+// ************************************************************************* //

@@ -1,0 +1,39 @@
+/*---------------------------------------------------------------------------*\
+  =========                 |
+  \\      /  F ield         | segregationDegradationFoam
+   \\    /   O peration     |
+    \\  /    A nd           |
+     \\/     M anipulation  |
+\*---------------------------------------------------------------------------*/
+
+#include "kineticSievingModel.H"
+
+Foam::autoPtr<Foam::kineticSievingModel> Foam::kineticSievingModel::New
+(
+    const dictionary& dict,
+    const granularMixture& mixture,
+    const bulkFlowModel& bulkFlow
+)
+{
+    const word modelType(dict.get<word>("model"));
+
+    Info<< "Selecting kineticSieving model " << modelType << endl;
+
+    auto cstrIter = dictionaryConstructorTablePtr_->cfind(modelType);
+
+    if (!cstrIter.found())
+    {
+        FatalIOErrorInLookup
+        (
+            dict,
+            "kineticSieving model",
+            modelType,
+            *dictionaryConstructorTablePtr_
+        ) << exit(FatalIOError);
+    }
+
+    return autoPtr<kineticSievingModel>(cstrIter()(dict, mixture, bulkFlow));
+}
+
+
+// ************************************************************************* //

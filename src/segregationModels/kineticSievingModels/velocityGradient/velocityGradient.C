@@ -1,0 +1,95 @@
+/*---------------------------------------------------------------------------*\
+  =========                 |
+  \\      /  F ield         | segregationDegradationFoam
+   \\    /   O peration     |
+    \\  /    A nd           |
+     \\/     M anipulation  |
+\*---------------------------------------------------------------------------*/
+
+#include "velocityGradient.H"
+#include "addToRunTimeSelectionTable.H"
+#include "fvcSnGrad.H"
+
+namespace Foam
+{
+namespace kineticSievingModels
+{
+    defineTypeNameAndDebug(velocityGradient, 0);
+    addToRunTimeSelectionTable
+    (
+        kineticSievingModel,
+        velocityGradient,
+        dictionary
+    );
+}
+}
+
+
+Foam::kineticSievingModels::velocityGradient::velocityGradient
+(
+    const dictionary& dict,
+    const granularMixture& mixture,
+    const bulkFlowModel& bulkFlow
+)
+:
+    kineticSievingModel(typeName, dict, mixture),
+    bulkFlow_(bulkFlow),
+    eta_(coeffs_.get<scalar>("eta")),
+    Umin_(coeffs_.getOrDefault<scalar>("Umin", 1e-6)),
+    gradLnUSf_
+    (
+        IOobject
+        (
+            "gradLnUSf",
+            mixture.mesh().time().timeName(),
+            mixture.mesh(),
+            IOobject::NO_READ,
+            IOobject::NO_WRITE,
+            false
+        ),
+        mixture.mesh(),
+        dimensionedScalar("s", dimLength, Zero)
+    )
+{
+    if (!(eta_ >= 0) || !(Umin_ > 0))
+    {
+        FatalIOErrorInFunction(coeffs_)
+            << "kinetic sieving: 'eta " << eta_ << "' must be >= 0 [m2/s] and"
+            << " 'Umin " << Umin_ << "' > 0 [m/s]" << nl
+            << exit(FatalIOError);
+    }
+    correct();
+}
+
+
+void Foam::kineticSievingModels::velocityGradient::correct()
+{
+    const volScalarField lnU
+    (
+        log(max(mag(bulkFlow_.U()), dimensionedScalar("s", dimVelocity, Umin_))
+           /dimensionedScalar("s", dimVelocity, 1))
+    );
+    gradLnUSf_ = fvc::snGrad(lnU)*mixture_.mesh().magSf();
+    zeroUncoupledPatches(gradLnUSf_);
+}
+
+
+Foam::tmp<Foam::surfaceScalarField>
+Foam::kineticSievingModels::velocityGradient::driftFlux
+(
+    const label finei,
+    const label coarsej
+) const
+{
+    // The coarse moves up the gradient, so the fine drifts down it
+    return
+        dimensionedScalar
+        (
+            "W",
+            dimArea/dimTime,
+            -eta_*pairScale(mixture_, finei, coarsej)
+        )*gradLnUSf_;
+}
+
+
+// ************************************************************************* //

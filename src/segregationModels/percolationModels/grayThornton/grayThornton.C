@@ -1,0 +1,95 @@
+/*---------------------------------------------------------------------------*\
+  =========                 |
+  \\      /  F ield         | segregationDegradationFoam
+   \\    /   O peration     |
+    \\  /    A nd           |
+     \\/     M anipulation  |
+\*---------------------------------------------------------------------------*/
+
+#include "grayThornton.H"
+#include "addToRunTimeSelectionTable.H"
+#include "uniformDimensionedFields.H"
+
+namespace Foam
+{
+namespace percolationModels
+{
+    defineTypeNameAndDebug(grayThornton, 0);
+    addToRunTimeSelectionTable(percolationModel, grayThornton, dictionary);
+}
+}
+
+
+Foam::percolationModels::grayThornton::grayThornton
+(
+    const dictionary& dict,
+    const granularMixture& mixture,
+    const bulkFlowModel&
+)
+:
+    percolationModel(typeName, dict, mixture),
+    Sr_(coeffs_.get<scalar>("Sr")),
+    gSf_
+    (
+        IOobject
+        (
+            "gSf",
+            mixture.mesh().time().timeName(),
+            mixture.mesh(),
+            IOobject::NO_READ,
+            IOobject::NO_WRITE,
+            false
+        ),
+        mixture.mesh(),
+        dimensionedScalar("s", dimArea, Zero)
+    )
+{
+    if (!(Sr_ >= 0))
+    {
+        FatalIOErrorInFunction(coeffs_)
+            << "Percolation velocity 'Sr " << Sr_ << "' must be >= 0 [m/s]"
+            << nl << exit(FatalIOError);
+    }
+
+    const fvMesh& mesh = mixture.mesh();
+    uniformDimensionedVectorField g
+    (
+        IOobject
+        (
+            "g",
+            mesh.time().constant(),
+            mesh,
+            IOobject::MUST_READ,
+            IOobject::NO_WRITE,
+            false
+        )
+    );
+    if (mag(g.value()) < VSMALL)
+    {
+        FatalErrorInFunction
+            << "constant/g is zero: percolation acts along gravity" << nl
+            << exit(FatalError);
+    }
+    gSf_ = mesh.Sf() & dimensionedVector("v", dimless, g.value()/mag(g.value()));
+    zeroUncoupledPatches(gSf_);
+}
+
+
+Foam::tmp<Foam::surfaceScalarField>
+Foam::percolationModels::grayThornton::driftFlux
+(
+    const label finei,
+    const label coarsej
+) const
+{
+    return
+        dimensionedScalar
+        (
+            "W",
+            dimVelocity,
+            Sr_*pairScale(mixture_, finei, coarsej)
+        )*gSf_;
+}
+
+
+// ************************************************************************* //

@@ -1,0 +1,39 @@
+/*---------------------------------------------------------------------------*\
+  =========                 |
+  \\      /  F ield         | segregationDegradationFoam
+   \\    /   O peration     |
+    \\  /    A nd           |
+     \\/     M anipulation  |
+\*---------------------------------------------------------------------------*/
+
+#include "percolationModel.H"
+
+Foam::autoPtr<Foam::percolationModel> Foam::percolationModel::New
+(
+    const dictionary& dict,
+    const granularMixture& mixture,
+    const bulkFlowModel& bulkFlow
+)
+{
+    const word modelType(dict.get<word>("model"));
+
+    Info<< "Selecting percolation model " << modelType << endl;
+
+    auto cstrIter = dictionaryConstructorTablePtr_->cfind(modelType);
+
+    if (!cstrIter.found())
+    {
+        FatalIOErrorInLookup
+        (
+            dict,
+            "percolation model",
+            modelType,
+            *dictionaryConstructorTablePtr_
+        ) << exit(FatalIOError);
+    }
+
+    return autoPtr<percolationModel>(cstrIter()(dict, mixture, bulkFlow));
+}
+
+
+// ************************************************************************* //
