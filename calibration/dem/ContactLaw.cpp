@@ -1,0 +1,251 @@
+#include "ContactLaw.hpp"
+
+#include <algorithm>
+#include <limits>
+#include <stdexcept>
+
+namespace sdf::dem
+{
+
+ContactModel contactModelFromName(const std::string& name)
+{
+    if (name == "linear" || name == "linearSpringDashpot" || name == "hooke")
+    {
+        return ContactModel::linearSpringDashpot;
+    }
+    if (name == "hertz" || name == "hertzMindlin")
+    {
+        return ContactModel::hertzMindlin;
+    }
+    throw std::invalid_argument
+    (
+        "contact model '" + name + "' unknown; valid: linearSpringDashpot, hertzMindlin"
+    );
+}
+
+std::string contactModelName(ContactModel model)
+{
+    return model == ContactModel::linearSpringDashpot ? "linearSpringDashpot" : "hertzMindlin";
+}
+
+void validateContactSettings(const ContactSettings& s)
+{
+    if (!(s.restitution > 0.0 && s.restitution <= 1.0))
+    {
+        throw std::invalid_argument
+        (
+            "restitution e = " + std::to_string(s.restitution) + " outside (0, 1]"
+        );
+    }
+    if (!(s.friction >= 0.0) || !std::isfinite(s.friction))
+    {
+        throw std::invalid_argument("friction must be >= 0 (got " + std::to_string(s.friction) + ")");
+    }
+    if (s.model == ContactModel::linearSpringDashpot)
+    {
+        if (!(s.normalStiffness > 0) || !std::isfinite(s.normalStiffness))
+        {
+            throw std::invalid_argument("normalStiffness must be positive");
+        }
+        if (!(s.tangentialStiffnessRatio > 0))
+        {
+            throw std::invalid_argument("tangentialStiffnessRatio must be positive");
+        }
+        if (!(s.tangentialDampingRatio >= 0))
+        {
+            throw std::invalid_argument("tangentialDampingRatio must be >= 0");
+        }
+    }
+    else
+    {
+        if (!(s.youngsModulus > 0) || !std::isfinite(s.youngsModulus))
+        {
+            throw std::invalid_argument("youngsModulus must be positive");
+        }
+        if (!(s.poissonRatio > -1.0 && s.poissonRatio < 0.5))
+        {
+            throw std::invalid_argument("poissonRatio must be in (-1, 0.5)");
+        }
+    }
+}
+
+double hertzRestitution(double alpha)
+{
+    // x'' = -x^{3/2} - alpha x^{1/4} x', x(0) = 0, x'(0) = 1; force clipped at zero.
+    // RK4 with a small fixed step; the contact lasts about 3.2 time units.
+    const double h = 2e-3;
+    double x = 0, v = 1;
+    auto acc = [alpha](double xx, double vv)
+    {
+        if (xx <= 0) return 0.0;
+        const double sx = std::sqrt(xx);
+        const double a = -xx*sx - alpha*std::sqrt(sx)*vv;
+        return std::min(a, 0.0);
+    };
+    for (int step = 0; step < 2000000; ++step)
+    {
+        const double k1x = v, k1v = acc(x, v);
+        const double k2x = v + 0.5*h*k1v, k2v = acc(x + 0.5*h*k1x, v + 0.5*h*k1v);
+        const double k3x = v + 0.5*h*k2v, k3v = acc(x + 0.5*h*k2x, v + 0.5*h*k2v);
+        const double k4x = v + h*k3v, k4v = acc(x + h*k3x, v + h*k3v);
+        const double xn = x + h/6*(k1x + 2*k2x + 2*k3x + k4x);
+        const double vn = v + h/6*(k1v + 2*k2v + 2*k3v + k4v);
+        if (xn <= 0 && step > 0)
+        {
+            return -vn;
+        }
+        x = xn;
+        v = vn;
+        if (v >= 0 && x <= 0) return 0;
+    }
+    return -v;
+}
+
+double hertzDampingFactor(double e)
+{
+    if (e >= 1.0) return 0.0;
+    // e(alpha) decreases monotonically: bracket, then safeguarded secant (regula falsi,
+    // Illinois variant) on e(alpha) - e
+    double lo = 0.0, hi = 1.0;
+    double fLo = 1.0 - e;
+    double fHi = hertzRestitution(hi) - e;
+    while (fHi > 0) { lo = hi; fLo = fHi; hi *= 2; fHi = hertzRestitution(hi) - e; }
+    int side = 0;
+    for (int it = 0; it < 100; ++it)
+    {
+        const double mid = (lo*fHi - hi*fLo)/(fHi - fLo);
+        const double fMid = hertzRestitution(mid) - e;
+        if (std::abs(fMid) < 1e-12 || hi - lo < 1e-12*hi) return mid;
+        if (fMid > 0)
+        {
+            lo = mid; fLo = fMid;
+            if (side == -1) fHi *= 0.5;
+            side = -1;
+        }
+        else
+        {
+            hi = mid; fHi = fMid;
+            if (side == 1) fLo *= 0.5;
+            side = 1;
+        }
+    }
+    return 0.5*(lo + hi);
+}
+
+ContactLaw::ContactLaw(const ContactSettings& settings, const std::vector<Species>& species)
+:
+    settings_(settings),
+    nSpecies_(int(species.size())),
+    species_(species)
+{
+    validateContactSettings(settings_);
+    validateSpecies(species_);
+    if (settings_.model == ContactModel::hertzMindlin)
+    {
+        hertzAlpha_ = hertzDampingFactor(settings_.restitution);
+    }
+    pairs_.resize(nSpecies_*nSpecies_);
+    walls_.resize(nSpecies_);
+    for (int a = 0; a < nSpecies_; ++a)
+    {
+        for (int b = 0; b < nSpecies_; ++b)
+        {
+            pairs_[a*nSpecies_ + b] = makeCoefficients
+            (
+                species_[a].mass(), species_[a].radius(),
+                species_[b].mass(), species_[b].radius(), false
+            );
+        }
+        walls_[a] = makeCoefficients(species_[a].mass(), species_[a].radius(), 0, 0, true);
+    }
+}
+
+PairCoefficients ContactLaw::makeCoefficients
+(
+    double mi, double ri, double mj, double rj, bool wall
+) const
+{
+    PairCoefficients c;
+    c.effectiveMass = wall ? mi : mi*mj/(mi + mj);
+    c.effectiveRadius = wall ? ri : ri*rj/(ri + rj);
+    c.friction = settings_.friction;
+    const double e = settings_.restitution;
+    const double lnE = std::log(e);
+    if (settings_.model == ContactModel::linearSpringDashpot)
+    {
+        c.kn = settings_.normalStiffness;
+        c.kt = settings_.tangentialStiffnessRatio*c.kn;
+        // exact restitution of the damped oscillator m x'' + gamma x' + k x = 0
+        c.gammaN = -2.0*lnE*std::sqrt(c.effectiveMass*c.kn)/std::sqrt(M_PI*M_PI + lnE*lnE);
+        c.gammaT = settings_.tangentialDampingRatio*c.gammaN;
+    }
+    else
+    {
+        const double E = settings_.youngsModulus, nu = settings_.poissonRatio;
+        const double G = E/(2*(1 + nu));
+        // same material on both sides (a wall is the same material too)
+        const double eStar = E/(2*(1 - nu*nu));
+        const double gStar = G/(2*(2 - nu));
+        const double sqrtR = std::sqrt(c.effectiveRadius);
+        c.hertzK = 4.0/3.0*eStar*sqrtR;
+        c.mindlinK = 8.0*gStar*sqrtR;
+        // Tsuji: gamma_n = alpha sqrt(m* K) delta^{1/4}
+        c.hertzDamp = hertzAlpha_*std::sqrt(c.effectiveMass*c.hertzK);
+        // same form for the tangential dashpot, with the Mindlin stiffness
+        // S_t = mindlinK sqrt(delta) in place of dF_n/d delta = 1.5 K sqrt(delta)
+        c.mindlinDamp = hertzAlpha_*std::sqrt(c.effectiveMass*c.mindlinK/1.5);
+    }
+    return c;
+}
+
+double ContactLaw::contactDuration(double vImpact) const
+{
+    double shortest = std::numeric_limits<double>::max();
+    const double e = settings_.restitution;
+    const double lnE = std::log(e);
+    for (const PairCoefficients& c : pairs_)
+    {
+        double tc;
+        if (settings_.model == ContactModel::linearSpringDashpot)
+        {
+            const double omega0 = std::sqrt(c.kn/c.effectiveMass);
+            tc = std::sqrt(M_PI*M_PI + lnE*lnE)/omega0;
+        }
+        else
+        {
+            // elastic Hertz duration 2.87 (m*^2/(R* E*^2 v))^{1/5}, with K = 4/3 E* sqrt(R*)
+            const double eStar = 0.75*c.hertzK/std::sqrt(c.effectiveRadius);
+            tc = 2.868*std::pow
+            (
+                c.effectiveMass*c.effectiveMass
+               /(c.effectiveRadius*eStar*eStar*std::max(vImpact, 1e-300)),
+                0.2
+            );
+        }
+        shortest = std::min(shortest, tc);
+    }
+    return shortest;
+}
+
+double ContactLaw::maximumTimeStep() const
+{
+    if (settings_.model == ContactModel::linearSpringDashpot)
+    {
+        return contactDuration(1.0)/50.0;
+    }
+    // Rayleigh time of the smallest-r*sqrt(rho) species
+    const double E = settings_.youngsModulus, nu = settings_.poissonRatio;
+    const double G = E/(2*(1 + nu));
+    double tR = std::numeric_limits<double>::max();
+    for (const Species& s : species_)
+    {
+        tR = std::min
+        (
+            tR,
+            M_PI*s.radius()*std::sqrt(s.density/G)/(0.1631*nu + 0.8766)
+        );
+    }
+    return 0.2*tR;
+}
+
+} // namespace sdf::dem

@@ -1,0 +1,81 @@
+#ifndef sdf_dem_InitialState_hpp
+#define sdf_dem_InitialState_hpp
+
+// Initial states: random insertion at reduced radii, then radii grown while a damped,
+// frictionless relaxation removes the overlaps (Lubachevsky-Stillinger-like growth), until
+// the target solids fraction is reached with overlaps below a tolerance.
+
+#include "Particles.hpp"
+#include "PeriodicBox.hpp"
+#include "Species.hpp"
+
+#include <cstdint>
+#include <random>
+#include <vector>
+
+namespace sdf::dem
+{
+
+//- Highest accepted solids fraction (random close packing of spheres ~0.64).
+constexpr double jammingSolidsFraction = 0.64;
+
+struct PackingSettings
+{
+    double solidsFraction = 0.3;       // phi
+    std::vector<int> counts;           // particles per species
+    std::uint64_t seed = 1;
+    double overlapTolerance = 2e-3;    // final max overlap / smaller diameter
+    long maxSteps = 400000;            // relaxation step budget
+    bool verbose = false;
+};
+
+struct Packing
+{
+    Particles particles;
+    PeriodicBox box;
+    long relaxationSteps = 0;
+    double maxOverlapFraction = 0;
+};
+
+//- Throws std::invalid_argument naming the entry for phi outside (0, 0.64], no particles.
+void validatePackingSettings(const std::vector<Species>& species, const PackingSettings& s);
+
+//- Particle counts per species for a total N and solids volume fractions of each species
+//  (fractions of the solids volume, summing to 1; e.g. coarse fraction x of a binary mix).
+std::vector<int> countsFromVolumeFractions
+(
+    const std::vector<Species>& species,
+    const std::vector<double>& volumeFractions,
+    int nTotal
+);
+
+//- Cubic periodic box at the requested phi with particles at rest, overlaps relaxed.
+Packing makePacking(const std::vector<Species>& species, const PackingSettings& settings);
+
+//- Maxwellian fluctuating velocities with <|c|^2> = T (T1 = T/3 per component), zero total
+//  momentum, plus the Lees-Edwards streaming profile shearRate (y - ly/2) in x.
+void assignVelocities
+(
+    Particles& particles,
+    const PeriodicBox& box,
+    double temperature,
+    double shearRate,
+    std::uint64_t seed
+);
+
+//- Portable random numbers (std distributions differ between standard libraries).
+class RandomStream
+{
+public:
+    explicit RandomStream(std::uint64_t seed) : engine_(seed) {}
+    double uniform() { return double(engine_() >> 11)*0x1.0p-53; }   // [0, 1)
+    double normal();
+private:
+    std::mt19937_64 engine_;
+    bool hasSpare_ = false;
+    double spare_ = 0;
+};
+
+} // namespace sdf::dem
+
+#endif

@@ -1,0 +1,46 @@
+#ifndef sdf_dem_NeighbourList_hpp
+#define sdf_dem_NeighbourList_hpp
+
+// Verlet pair list with a skin, built from linked cells of width >= 2 R_max + skin.
+// A pair (i < j) is listed when its gap is below the skin, so for size ratios 2-4 the list
+// holds only plausible partners even though the cells are sized by the largest particle.
+// Pairs are ordered by (i, j): the order, and hence every reduction over it, is fixed
+// for a given configuration whatever the number of threads.
+
+#include "Particles.hpp"
+#include "PeriodicBox.hpp"
+
+#include <vector>
+
+namespace sdf::dem
+{
+
+class NeighbourList
+{
+public:
+    //- Builds the list; throws std::invalid_argument when the box is thinner than
+    //  2 (2 R_max + skin) in any direction (minimum image would not be unique).
+    void build(const Particles& particles, const PeriodicBox& box, double skin);
+
+    std::size_t size() const { return first_.size(); }
+    const std::vector<int>& first() const { return first_; }
+    const std::vector<int>& second() const { return second_; }
+
+    //- Pairs incident to particle p: incidentPairs()[incidentStart()[p] .. incidentStart()[p+1])
+    const std::vector<int>& incidentStart() const { return incidentStart_; }
+    const std::vector<int>& incidentPairs() const { return incidentPairs_; }
+
+    double cutoff() const { return cutoff_; }
+    long builds() const { return builds_; }
+
+private:
+    std::vector<int> first_, second_;
+    std::vector<int> incidentStart_, incidentPairs_;
+    std::vector<int> cellStart_, cellParticles_, particleCell_;
+    double cutoff_ = 0;
+    long builds_ = 0;
+};
+
+} // namespace sdf::dem
+
+#endif

@@ -1,0 +1,43 @@
+#ifndef sdf_dem_Particles_hpp
+#define sdf_dem_Particles_hpp
+
+// Structure-of-arrays particle storage: each quantity is one contiguous array so that the
+// hot loops stream through memory and vectorise.
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+namespace sdf::dem
+{
+
+struct Particles
+{
+    // full-step positions, wrapped into the periodic box
+    std::vector<double> x, y, z;
+    // unwrapped displacement since the start (for mean-square displacements)
+    std::vector<double> ux, uy, uz;
+    // velocities (lab frame; Lees-Edwards: including the streaming velocity)
+    std::vector<double> vx, vy, vz;
+    // angular velocities
+    std::vector<double> wx, wy, wz;
+    // forces and torques of the last evaluation
+    std::vector<double> fx, fy, fz;
+    std::vector<double> tx, ty, tz;
+    std::vector<double> radius, mass, inertia, invMass, invInertia;
+    std::vector<int> species;
+
+    std::size_t size() const { return x.size(); }
+
+    void resize(std::size_t n);
+
+    //- Appends one particle at rest.
+    void add(double px, double py, double pz, double r, double m, int speciesId);
+
+    //- Sets radius and derived mass and moment of inertia (solid sphere) from density.
+    void setRadius(std::size_t i, double r, double density);
+};
+
+} // namespace sdf::dem
+
+#endif

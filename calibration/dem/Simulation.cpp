@@ -1,0 +1,810 @@
+#include "Simulation.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <iostream>
+#include <sstream>
+#include <stdexcept>
+
+#ifdef _OPENMP
+#include <omp.h>
+#endif
+
+namespace sdf::dem
+{
+
+CellMode cellModeFromName(const std::string& name)
+{
+    if (name == "nve") return CellMode::nve;
+    if (name == "thermostatted" || name == "driven") return CellMode::thermostatted;
+    if (name == "leesEdwards" || name == "shear") return CellMode::leesEdwards;
+    throw std::invalid_argument
+    (
+        "cell mode '" + name + "' unknown; valid: nve, thermostatted, leesEdwards"
+    );
+}
+
+std::string cellModeName(CellMode mode)
+{
+    switch (mode)
+    {
+        case CellMode::nve: return "nve";
+        case CellMode::thermostatted: return "thermostatted";
+        case CellMode::leesEdwards: return "leesEdwards";
+    }
+    return "unknown";
+}
+
+// ---------------------------------------------------------------- StressSplit
+
+Eigen::Matrix3d StressSplit::speciesStress(int s) const
+{
+    return kinetic[s] + configurational[speciesPairIndex(s, s, nSpecies)];
+}
+
+Eigen::Matrix3d StressSplit::crossStress(int s, int t) const
+{
+    return configurational[speciesPairIndex(s, t, nSpecies)];
+}
+
+Eigen::Matrix3d StressSplit::sum() const
+{
+    Eigen::Matrix3d total = Eigen::Matrix3d::Zero();
+    for (int s = 0; s < nSpecies; ++s) total += speciesStress(s);
+    for (int s = 0; s < nSpecies; ++s)
+    {
+        for (int t = s + 1; t < nSpecies; ++t) total += crossStress(s, t);
+    }
+    return total;
+}
+
+// ---------------------------------------------------------------- CollisionStatistics
+
+void CollisionStatistics::reset(int n, double eMin, double eMax, int nBins)
+{
+    if (!(eMin > 0 && eMax > eMin && nBins > 0))
+    {
+        throw std::invalid_argument("collision histogram: need 0 < eMin < eMax and nBins > 0");
+    }
+    nSpecies = n;
+    binEdges.resize(nBins + 1);
+    for (int b = 0; b <= nBins; ++b)
+    {
+        binEdges[b] = eMin*std::pow(eMax/eMin, double(b)/nBins);
+    }
+    clearCounts();
+}
+
+void CollisionStatistics::clearCounts()
+{
+    const int nPairs = numberOfSpeciesPairs(nSpecies);
+    counts.assign(nPairs, 0);
+    energySum.assign(nPairs, 0.0);
+    histogram.assign(nPairs, std::vector<long>(binEdges.empty() ? 0 : binEdges.size() + 1, 0));
+    elapsedTime = 0;
+}
+
+double CollisionStatistics::frequencyPerParticle
+(
+    int s, int t, const std::vector<int>& speciesCounts
+) const
+{
+    if (elapsedTime <= 0 || speciesCounts[s] == 0) return 0;
+    const double c = double(counts[speciesPairIndex(s, t, nSpecies)]);
+    // a collision within species s involves two particles of s
+    const double involved = (s == t) ? 2*c : c;
+    return involved/(elapsedTime*speciesCounts[s]);
+}
+
+// ---------------------------------------------------------------- Simulation
+
+Simulation::Simulation
+(
+    std::vector<Species> species,
+    SimulationSettings settings,
+    Particles particles,
+    PeriodicBox box
+)
+:
+    species_(std::move(species)),
+    settings_(settings),
+    law_(settings_.contact, species_),
+    particles_(std::move(particles)),
+    box_(box)
+{
+    const int n = int(particles_.size());
+    const int nSpecies = int(species_.size());
+    for (int i = 0; i < n; ++i)
+    {
+        if (particles_.species[i] < 0 || particles_.species[i] >= nSpecies)
+        {
+            throw std::invalid_argument("particle " + std::to_string(i) + ": species id out of range");
+        }
+        if (!(particles_.radius[i] > 0))
+        {
+            throw std::invalid_argument("particle " + std::to_string(i) + ": radius must be positive");
+        }
+    }
+    if (!(box_.lx > 0 && box_.ly > 0 && box_.lz > 0))
+    {
+        throw std::invalid_argument("box lengths must be positive");
+    }
+
+    const double dtMax = law_.maximumTimeStep();
+    dt_ = settings_.timeStep > 0 ? settings_.timeStep : 0.5*dtMax;
+    if (!(settings_.timeStep >= 0) || !std::isfinite(settings_.timeStep))
+    {
+        throw std::invalid_argument("timeStep must be positive");
+    }
+    if (settings_.checkTimeStep && dt_ > dtMax*(1 + 1e-12))
+    {
+        std::ostringstream msg;
+        msg << "timeStep dt = " << dt_ << " s exceeds the recommended maximum "
+            << dtMax << " s ("
+            << (law_.model() == ContactModel::linearSpringDashpot
+                ? "t_c/50 of the lightest pair, t_c = " + std::to_string(law_.contactDuration(1.0)) + " s"
+                : "0.2 x Rayleigh time of the smallest species")
+            << ")";
+        throw std::invalid_argument(msg.str());
+    }
+
+    if (settings_.mode == CellMode::thermostatted && !(settings_.targetTemperature > 0))
+    {
+        throw std::invalid_argument("thermostatted cell: targetTemperature must be positive");
+    }
+    if (settings_.mode == CellMode::leesEdwards && !std::isfinite(settings_.shearRate))
+    {
+        throw std::invalid_argument("leesEdwards cell: shearRate must be finite");
+    }
+    box_.shearRate = settings_.mode == CellMode::leesEdwards ? settings_.shearRate : 0.0;
+    if (settings_.thermostatTime <= 0) settings_.thermostatTime = 50*dt_;
+
+    double dMin = species_[0].diameter;
+    for (const Species& s : species_) dMin = std::min(dMin, s.diameter);
+    skin_ = settings_.skin >= 0 ? settings_.skin : 0.3*dMin;
+
+#ifdef _OPENMP
+    nThreads_ = settings_.threads > 0 ? settings_.threads : omp_get_max_threads();
+#else
+    nThreads_ = 1;
+#endif
+
+    for (int i = 0; i < n; ++i)
+    {
+        box_.wrap(particles_.x[i], particles_.y[i], particles_.z[i], particles_.vx[i]);
+    }
+    for (auto* a : {&svx_, &svy_, &svz_, &swx_, &swy_, &swz_, &dispX_, &dispY_, &dispZ_})
+    {
+        a->assign(n, 0.0);
+    }
+
+    refreshForces();
+
+    // reference for the blow-up check
+    double massSum = 0, vMax2 = 0;
+    for (int i = 0; i < n; ++i)
+    {
+        massSum += particles_.mass[i];
+        vMax2 = std::max(vMax2, fluctuatingVelocity(i).squaredNorm());
+    }
+    const double shearScale = box_.shearRate*box_.ly;
+    referenceEnergy_ = std::max
+    ({
+        translationalKineticEnergy() + rotationalKineticEnergy(),
+        0.5*massSum*settings_.targetTemperature,
+        0.5*massSum*shearScale*shearScale,
+        0.5*massSum*vMax2,
+        1e-300
+    });
+}
+
+std::vector<int> Simulation::speciesCounts() const
+{
+    std::vector<int> counts(species_.size(), 0);
+    for (const int s : particles_.species) ++counts[s];
+    return counts;
+}
+
+void Simulation::addWall(const Wall& wall)
+{
+    Wall w = wall;
+    w.normal.normalize();
+    walls_.push_back(w);
+    wallHistory_.emplace_back(particles_.size());
+    refreshForces();
+}
+
+void Simulation::refreshForces()
+{
+    const std::size_t n = particles_.size();
+    for (std::size_t i = 0; i < n; ++i)
+    {
+        svx_[i] = particles_.vx[i]; svy_[i] = particles_.vy[i]; svz_[i] = particles_.vz[i];
+        swx_[i] = particles_.wx[i]; swy_[i] = particles_.wy[i]; swz_[i] = particles_.wz[i];
+    }
+    computeForces();
+}
+
+bool Simulation::neighbourListExpired() const
+{
+    const std::size_t n = particles_.size();
+    double max2 = 0;
+    for (std::size_t i = 0; i < n; ++i)
+    {
+        const double d2 = dispX_[i]*dispX_[i] + dispY_[i]*dispY_[i] + dispZ_[i]*dispZ_[i];
+        max2 = std::max(max2, d2);
+    }
+    // relative displacement of any pair: two peculiar displacements plus the relative
+    // streaming across at most one cutoff in y
+    const double shearDrift = std::abs(box_.shearRate)*timeSinceBuild_*(list_.cutoff() + skin_);
+    return 2*std::sqrt(max2) + shearDrift + 2*radiusGrowthSinceBuild_ >= skin_;
+}
+
+void Simulation::scaleRadii(double factor)
+{
+    if (!(factor > 0)) throw std::invalid_argument("scaleRadii: factor must be positive");
+    double rMax = 0;
+    for (double& r : particles_.radius)
+    {
+        r *= factor;
+        rMax = std::max(rMax, r);
+    }
+    if (factor > 1) radiusGrowthSinceBuild_ += rMax*(1 - 1/factor);
+    else listValid_ = false;
+}
+
+void Simulation::rebuildNeighbourList()
+{
+    const std::vector<int> oldFirst = list_.first();
+    const std::vector<int> oldSecond = list_.second();
+    const std::vector<ContactHistory> oldHistory = history_;
+
+    list_.build(particles_, box_, skin_);
+
+    // carry contact histories over: both lists are sorted by (i, j)
+    const std::size_t nPairs = list_.size();
+    history_.assign(nPairs, ContactHistory());
+    std::size_t o = 0;
+    const std::vector<int>& f = list_.first();
+    const std::vector<int>& s = list_.second();
+    for (std::size_t k = 0; k < nPairs && o < oldFirst.size(); ++k)
+    {
+        while
+        (
+            o < oldFirst.size()
+         && (oldFirst[o] < f[k] || (oldFirst[o] == f[k] && oldSecond[o] < s[k]))
+        )
+        {
+            ++o;
+        }
+        if (o < oldFirst.size() && oldFirst[o] == f[k] && oldSecond[o] == s[k])
+        {
+            history_[k] = oldHistory[o];
+        }
+    }
+    for (auto* a : {&pfx_, &pfy_, &pfz_, &pcx_, &pcy_, &pcz_}) a->assign(nPairs, 0.0);
+    std::fill(dispX_.begin(), dispX_.end(), 0.0);
+    std::fill(dispY_.begin(), dispY_.end(), 0.0);
+    std::fill(dispZ_.begin(), dispZ_.end(), 0.0);
+    timeSinceBuild_ = 0;
+    radiusGrowthSinceBuild_ = 0;
+    listValid_ = true;
+}
+
+void Simulation::computeForces()
+{
+    if (!listValid_ || neighbourListExpired()) rebuildNeighbourList();
+
+    Particles& p = particles_;
+    const int n = int(p.size());
+    const int nPairs = int(list_.size());
+    const int* first = list_.first().data();
+    const int* second = list_.second().data();
+    const ContactModel model = law_.model();
+    const int nSpecies = int(species_.size());
+    const double dt = dt_;
+    const PeriodicBox box = box_;
+
+    const int nSpeciesPairs = numberOfSpeciesPairs(nSpecies);
+    const int nHist = collisionsEnabled_ ? int(collisions_.binEdges.size()) + 1 : 0;
+    std::vector<std::vector<long>> localCounts(nThreads_);
+    std::vector<std::vector<double>> localEnergy(nThreads_);
+    std::vector<std::vector<long>> localHist(nThreads_);
+
+    double maxOverlap = 0;
+
+    #pragma omp parallel num_threads(nThreads_) reduction(max:maxOverlap)
+    {
+        int tid = 0;
+#ifdef _OPENMP
+        tid = omp_get_thread_num();
+#endif
+        std::vector<long>& counts = localCounts[tid];
+        std::vector<double>& energy = localEnergy[tid];
+        std::vector<long>& hist = localHist[tid];
+        if (collisionsEnabled_)
+        {
+            counts.assign(nSpeciesPairs, 0);
+            energy.assign(nSpeciesPairs, 0.0);
+            hist.assign(nSpeciesPairs*nHist, 0);
+        }
+
+        #pragma omp for schedule(static)
+        for (int k = 0; k < nPairs; ++k)
+        {
+            const int i = first[k], j = second[k];
+            ContactKinematics kin;
+            double dx = p.x[i] - p.x[j], dy = p.y[i] - p.y[j], dz = p.z[i] - p.z[j];
+            double shiftVx = 0;
+            box.minimumImage(dx, dy, dz, shiftVx);
+            kin.r[0] = dx; kin.r[1] = dy; kin.r[2] = dz;
+            const double ri = p.radius[i], rj = p.radius[j];
+            const double reach = ri + rj;
+            if (dx*dx + dy*dy + dz*dz >= reach*reach)
+            {
+                // not touching: cheap exit without the velocity gathers
+                history_[k].touching = false;
+                history_[k].ft[0] = history_[k].ft[1] = history_[k].ft[2] = 0;
+                pfx_[k] = pfy_[k] = pfz_[k] = 0;
+                pcx_[k] = pcy_[k] = pcz_[k] = 0;
+                continue;
+            }
+            kin.radiusI = ri; kin.radiusJ = rj;
+            kin.dvHalf[0] = p.vx[i] - p.vx[j] + shiftVx;
+            kin.dvHalf[1] = p.vy[i] - p.vy[j];
+            kin.dvHalf[2] = p.vz[i] - p.vz[j];
+            kin.dvSync[0] = svx_[i] - svx_[j] + shiftVx;
+            kin.dvSync[1] = svy_[i] - svy_[j];
+            kin.dvSync[2] = svz_[i] - svz_[j];
+            kin.wHalfI[0] = p.wx[i]; kin.wHalfI[1] = p.wy[i]; kin.wHalfI[2] = p.wz[i];
+            kin.wHalfJ[0] = p.wx[j]; kin.wHalfJ[1] = p.wy[j]; kin.wHalfJ[2] = p.wz[j];
+            kin.wSyncI[0] = swx_[i]; kin.wSyncI[1] = swy_[i]; kin.wSyncI[2] = swz_[i];
+            kin.wSyncJ[0] = swx_[j]; kin.wSyncJ[1] = swy_[j]; kin.wSyncJ[2] = swz_[j];
+
+            const int si = p.species[i], sj = p.species[j];
+            const PairCoefficients& coeffs = law_.pair(si, sj);
+            const ContactResult res = evaluateContact(model, coeffs, kin, history_[k], dt);
+
+            pfx_[k] = res.force[0]; pfy_[k] = res.force[1]; pfz_[k] = res.force[2];
+            pcx_[k] = res.nCrossFt[0]; pcy_[k] = res.nCrossFt[1]; pcz_[k] = res.nCrossFt[2];
+
+            const double frac = res.overlap/(2*std::min(ri, rj));
+            if (frac > maxOverlap) maxOverlap = frac;
+
+            if (collisionsEnabled_ && res.newContact)
+            {
+                const int sp = speciesPairIndex(si, sj, nSpecies);
+                const double e = 0.5*coeffs.effectiveMass*res.normalVelocity*res.normalVelocity;
+                ++counts[sp];
+                energy[sp] += e;
+                const std::vector<double>& edges = collisions_.binEdges;
+                int bin;
+                if (e < edges.front()) bin = 0;
+                else if (e >= edges.back()) bin = nHist - 1;
+                else bin = int(std::upper_bound(edges.begin(), edges.end(), e) - edges.begin());
+                ++hist[sp*nHist + bin];
+            }
+        }
+
+        // gather per particle in increasing pair order: deterministic sums
+        const int* start = list_.incidentStart().data();
+        const int* pairsOf = list_.incidentPairs().data();
+        #pragma omp for schedule(static)
+        for (int i = 0; i < n; ++i)
+        {
+            double fx = 0, fy = 0, fz = 0, cx = 0, cy = 0, cz = 0;
+            for (int m = start[i]; m < start[i + 1]; ++m)
+            {
+                const int k = pairsOf[m];
+                const double sign = first[k] == i ? 1.0 : -1.0;
+                fx += sign*pfx_[k]; fy += sign*pfy_[k]; fz += sign*pfz_[k];
+                cx += pcx_[k]; cy += pcy_[k]; cz += pcz_[k];
+            }
+            const double r = p.radius[i];
+            p.fx[i] = fx; p.fy[i] = fy; p.fz[i] = fz;
+            p.tx[i] = -r*cx; p.ty[i] = -r*cy; p.tz[i] = -r*cz;
+        }
+    }
+
+    // walls (serial: only used for single-impact tests)
+    for (std::size_t w = 0; w < walls_.size(); ++w)
+    {
+        const Wall& wall = walls_[w];
+        for (int i = 0; i < n; ++i)
+        {
+            const double s =
+                (p.x[i] - wall.point.x())*wall.normal.x()
+              + (p.y[i] - wall.point.y())*wall.normal.y()
+              + (p.z[i] - wall.point.z())*wall.normal.z();
+            ContactHistory& h = wallHistory_[w][i];
+            if (s >= p.radius[i])
+            {
+                h.touching = false;
+                h.ft[0] = h.ft[1] = h.ft[2] = 0;
+                continue;
+            }
+            ContactKinematics kin;
+            for (int a = 0; a < 3; ++a) kin.r[a] = s*wall.normal[a];
+            kin.radiusI = p.radius[i]; kin.radiusJ = 0;
+            kin.dvHalf[0] = p.vx[i]; kin.dvHalf[1] = p.vy[i]; kin.dvHalf[2] = p.vz[i];
+            kin.dvSync[0] = svx_[i]; kin.dvSync[1] = svy_[i]; kin.dvSync[2] = svz_[i];
+            kin.wHalfI[0] = p.wx[i]; kin.wHalfI[1] = p.wy[i]; kin.wHalfI[2] = p.wz[i];
+            kin.wSyncI[0] = swx_[i]; kin.wSyncI[1] = swy_[i]; kin.wSyncI[2] = swz_[i];
+            for (int a = 0; a < 3; ++a) kin.wHalfJ[a] = kin.wSyncJ[a] = 0;
+            const ContactResult res =
+                evaluateContact(model, law_.wall(p.species[i]), kin, h, dt);
+            p.fx[i] += res.force[0]; p.fy[i] += res.force[1]; p.fz[i] += res.force[2];
+            const double r = p.radius[i];
+            p.tx[i] -= r*res.nCrossFt[0]; p.ty[i] -= r*res.nCrossFt[1]; p.tz[i] -= r*res.nCrossFt[2];
+            maxOverlap = std::max(maxOverlap, res.overlap/(2*r));
+        }
+    }
+
+    if (collisionsEnabled_)
+    {
+        for (int t = 0; t < nThreads_; ++t)
+        {
+            if (localCounts[t].empty()) continue;
+            for (int sp = 0; sp < nSpeciesPairs; ++sp)
+            {
+                collisions_.counts[sp] += localCounts[t][sp];
+                collisions_.energySum[sp] += localEnergy[t][sp];
+                for (int b = 0; b < nHist; ++b)
+                {
+                    collisions_.histogram[sp][b] += localHist[t][sp*nHist + b];
+                }
+            }
+        }
+    }
+
+    lastMaxOverlapFraction_ = maxOverlap;
+    if (settings_.maxOverlapFraction > 0 && maxOverlap > settings_.maxOverlapFraction)
+    {
+        // diagnosis: find the worst pair (serial rescan, only on failure)
+        int worstI = -1, worstJ = -1;
+        double worst = 0;
+        for (int k = 0; k < nPairs; ++k)
+        {
+            const int i = first[k], j = second[k];
+            double dx = p.x[i] - p.x[j], dy = p.y[i] - p.y[j], dz = p.z[i] - p.z[j], dvx = 0;
+            box.minimumImage(dx, dy, dz, dvx);
+            const double ov = p.radius[i] + p.radius[j] - std::sqrt(dx*dx + dy*dy + dz*dz);
+            const double frac = ov/(2*std::min(p.radius[i], p.radius[j]));
+            if (frac > worst) { worst = frac; worstI = i; worstJ = j; }
+        }
+        std::ostringstream msg;
+        msg << "unstable run stopped at step " << stepCount_ << " (t = " << time_
+            << " s): overlap " << 100*maxOverlap << " % of the smaller diameter exceeds "
+            << 100*settings_.maxOverlapFraction << " %";
+        if (worstI >= 0)
+        {
+            msg << " (particles " << worstI << " and " << worstJ << ")";
+        }
+        msg << "; the contacts are too soft for the impact speeds or dt = " << dt_
+            << " s is too large (recommended maximum " << law_.maximumTimeStep() << " s)";
+        throw std::runtime_error(msg.str());
+    }
+}
+
+void Simulation::step()
+{
+    Particles& p = particles_;
+    const int n = int(p.size());
+    const double h = 0.5*dt_;
+    const double dt = dt_;
+    const double shearRate = box_.shearRate;
+    const double yMid = 0.5*box_.ly;
+
+    #pragma omp parallel for schedule(static) num_threads(nThreads_)
+    for (int i = 0; i < n; ++i)
+    {
+        const double im = p.invMass[i], ii = p.invInertia[i];
+        p.vx[i] += h*p.fx[i]*im; p.vy[i] += h*p.fy[i]*im; p.vz[i] += h*p.fz[i]*im;
+        p.wx[i] += h*p.tx[i]*ii; p.wy[i] += h*p.ty[i]*ii; p.wz[i] += h*p.tz[i]*ii;
+
+        const double ddx = dt*p.vx[i], ddy = dt*p.vy[i], ddz = dt*p.vz[i];
+        dispX_[i] += ddx - dt*shearRate*(p.y[i] - yMid);
+        dispY_[i] += ddy;
+        dispZ_[i] += ddz;
+        p.ux[i] += ddx; p.uy[i] += ddy; p.uz[i] += ddz;
+        p.x[i] += ddx; p.y[i] += ddy; p.z[i] += ddz;
+    }
+    box_.advanceShear(dt);
+    #pragma omp parallel for schedule(static) num_threads(nThreads_)
+    for (int i = 0; i < n; ++i)
+    {
+        box_.wrap(p.x[i], p.y[i], p.z[i], p.vx[i]);
+        const double im = p.invMass[i], ii = p.invInertia[i];
+        svx_[i] = p.vx[i] + h*p.fx[i]*im;
+        svy_[i] = p.vy[i] + h*p.fy[i]*im;
+        svz_[i] = p.vz[i] + h*p.fz[i]*im;
+        swx_[i] = p.wx[i] + h*p.tx[i]*ii;
+        swy_[i] = p.wy[i] + h*p.ty[i]*ii;
+        swz_[i] = p.wz[i] + h*p.tz[i]*ii;
+    }
+    time_ += dt;
+    timeSinceBuild_ += dt;
+    if (collisionsEnabled_) collisions_.elapsedTime += dt;
+
+    computeForces();
+
+    #pragma omp parallel for schedule(static) num_threads(nThreads_)
+    for (int i = 0; i < n; ++i)
+    {
+        const double im = p.invMass[i], ii = p.invInertia[i];
+        p.vx[i] += h*p.fx[i]*im; p.vy[i] += h*p.fy[i]*im; p.vz[i] += h*p.fz[i]*im;
+        p.wx[i] += h*p.tx[i]*ii; p.wy[i] += h*p.ty[i]*ii; p.wz[i] += h*p.tz[i]*ii;
+    }
+
+    if (settings_.mode == CellMode::thermostatted) applyThermostat();
+
+    ++stepCount_;
+    if (stepCount_ % 100 == 0) checkEnergy();
+}
+
+void Simulation::applyThermostat()
+{
+    // Weak-coupling (Berendsen-type) rescaling of the fluctuating translational velocity
+    // of all particles by one factor: T relaxes to the target over tau_T while inelastic
+    // collisions keep removing energy; the mean velocity and the species' temperature
+    // ratio (non-equipartition) are left to the dynamics.
+    Particles& p = particles_;
+    const int n = int(p.size());
+    const Eigen::Vector3d mean = meanVelocity();
+    double sum = 0;
+    for (int i = 0; i < n; ++i)
+    {
+        const double cx = p.vx[i] - mean.x(), cy = p.vy[i] - mean.y(), cz = p.vz[i] - mean.z();
+        sum += cx*cx + cy*cy + cz*cz;
+    }
+    const double T = sum/n;
+    if (!(T > 0)) return;
+    const double ratio = settings_.targetTemperature/T;
+    const double lambda = std::sqrt(std::max(0.0, 1.0 + dt_/settings_.thermostatTime*(ratio - 1.0)));
+    for (int i = 0; i < n; ++i)
+    {
+        p.vx[i] = mean.x() + lambda*(p.vx[i] - mean.x());
+        p.vy[i] = mean.y() + lambda*(p.vy[i] - mean.y());
+        p.vz[i] = mean.z() + lambda*(p.vz[i] - mean.z());
+    }
+}
+
+void Simulation::checkEnergy() const
+{
+    const Particles& p = particles_;
+    const int n = int(p.size());
+    double e = 0;
+    for (int i = 0; i < n; ++i)
+    {
+        e += 0.5*p.mass[i]*fluctuatingVelocity(i).squaredNorm()
+           + 0.5*p.inertia[i]*(p.wx[i]*p.wx[i] + p.wy[i]*p.wy[i] + p.wz[i]*p.wz[i]);
+    }
+    if (!std::isfinite(e) || e > settings_.energyBlowUpFactor*referenceEnergy_)
+    {
+        std::ostringstream msg;
+        msg << "unstable run stopped at step " << stepCount_ << " (t = " << time_
+            << " s): fluctuating kinetic energy " << e << " J exceeds "
+            << settings_.energyBlowUpFactor << " x the reference " << referenceEnergy_
+            << " J (energy blow-up); reduce dt = " << dt_ << " s (recommended maximum "
+            << law_.maximumTimeStep() << " s) or check the contact stiffness";
+        throw std::runtime_error(msg.str());
+    }
+}
+
+void Simulation::run
+(
+    long nSteps,
+    const std::function<void(const Simulation&)>& observer,
+    long observeEvery,
+    long progressEvery,
+    const std::string& label
+)
+{
+    using clock = std::chrono::steady_clock;
+    const auto start = clock::now();
+    for (long s = 1; s <= nSteps; ++s)
+    {
+        step();
+        if (observer && observeEvery > 0 && s % observeEvery == 0) observer(*this);
+        if (progressEvery > 0 && (s % progressEvery == 0 || s == nSteps))
+        {
+            const double elapsed = std::chrono::duration<double>(clock::now() - start).count();
+            const double eta = elapsed/s*(nSteps - s);
+            std::printf
+            (
+                "%s: step %ld/%ld  time %.6g s  T %.6g m2/s2  max overlap %.3g %%  ETA %.1f s\n",
+                label.c_str(), s, nSteps, time_, temperature(),
+                100*lastMaxOverlapFraction_, eta
+            );
+            std::fflush(stdout);
+        }
+    }
+}
+
+// ---------------------------------------------------------------- measurements
+
+Eigen::Vector3d Simulation::meanVelocity() const
+{
+    const Particles& p = particles_;
+    Eigen::Vector3d momentum = Eigen::Vector3d::Zero();
+    double mass = 0;
+    for (std::size_t i = 0; i < p.size(); ++i)
+    {
+        momentum += p.mass[i]*Eigen::Vector3d(p.vx[i], p.vy[i], p.vz[i]);
+        mass += p.mass[i];
+    }
+    return mass > 0 ? Eigen::Vector3d(momentum/mass) : Eigen::Vector3d::Zero();
+}
+
+Eigen::Vector3d Simulation::fluctuatingVelocity(int i) const
+{
+    const Particles& p = particles_;
+    Eigen::Vector3d c(p.vx[i], p.vy[i], p.vz[i]);
+    if (settings_.mode == CellMode::leesEdwards)
+    {
+        c.x() -= box_.streamingVelocity(p.y[i]);
+    }
+    return c;
+}
+
+std::vector<double> Simulation::speciesTemperatures() const
+{
+    const int nSpecies = int(species_.size());
+    std::vector<double> sum(nSpecies, 0.0);
+    std::vector<int> count(nSpecies, 0);
+    const Eigen::Vector3d mean =
+        settings_.mode == CellMode::leesEdwards ? Eigen::Vector3d::Zero() : meanVelocity();
+    for (std::size_t i = 0; i < particles_.size(); ++i)
+    {
+        const int s = particles_.species[i];
+        sum[s] += (fluctuatingVelocity(int(i)) - mean).squaredNorm();
+        ++count[s];
+    }
+    for (int s = 0; s < nSpecies; ++s) sum[s] = count[s] ? sum[s]/count[s] : 0.0;
+    return sum;
+}
+
+double Simulation::temperature() const
+{
+    const Eigen::Vector3d mean =
+        settings_.mode == CellMode::leesEdwards ? Eigen::Vector3d::Zero() : meanVelocity();
+    double sum = 0;
+    for (std::size_t i = 0; i < particles_.size(); ++i)
+    {
+        sum += (fluctuatingVelocity(int(i)) - mean).squaredNorm();
+    }
+    return particles_.size() ? sum/particles_.size() : 0.0;
+}
+
+double Simulation::translationalKineticEnergy() const
+{
+    const Particles& p = particles_;
+    double e = 0;
+    for (std::size_t i = 0; i < p.size(); ++i)
+    {
+        e += 0.5*p.mass[i]*(p.vx[i]*p.vx[i] + p.vy[i]*p.vy[i] + p.vz[i]*p.vz[i]);
+    }
+    return e;
+}
+
+double Simulation::rotationalKineticEnergy() const
+{
+    const Particles& p = particles_;
+    double e = 0;
+    for (std::size_t i = 0; i < p.size(); ++i)
+    {
+        e += 0.5*p.inertia[i]*(p.wx[i]*p.wx[i] + p.wy[i]*p.wy[i] + p.wz[i]*p.wz[i]);
+    }
+    return e;
+}
+
+double Simulation::elasticEnergy() const
+{
+    const Particles& p = particles_;
+    double e = 0;
+    const std::vector<int>& f = list_.first();
+    const std::vector<int>& s = list_.second();
+    for (std::size_t k = 0; k < list_.size(); ++k)
+    {
+        if (!history_[k].touching) continue;
+        const int i = f[k], j = s[k];
+        double dx = p.x[i] - p.x[j], dy = p.y[i] - p.y[j], dz = p.z[i] - p.z[j], dvx = 0;
+        box_.minimumImage(dx, dy, dz, dvx);
+        const double delta = p.radius[i] + p.radius[j] - std::sqrt(dx*dx + dy*dy + dz*dz);
+        const PairCoefficients& c = law_.pair(p.species[i], p.species[j]);
+        e += law_.normalElasticEnergy(c, delta);
+        const double ft2 = history_[k].ft[0]*history_[k].ft[0]
+            + history_[k].ft[1]*history_[k].ft[1] + history_[k].ft[2]*history_[k].ft[2];
+        if (ft2 > 0 && delta > 0)
+        {
+            const double kt = law_.model() == ContactModel::linearSpringDashpot
+                ? c.kt : c.mindlinK*std::sqrt(delta);
+            e += 0.5*ft2/kt;
+        }
+    }
+    for (std::size_t w = 0; w < walls_.size(); ++w)
+    {
+        for (std::size_t i = 0; i < p.size(); ++i)
+        {
+            const double sd = (Eigen::Vector3d(p.x[i], p.y[i], p.z[i]) - walls_[w].point)
+                .dot(walls_[w].normal);
+            e += law_.normalElasticEnergy(law_.wall(p.species[i]), p.radius[i] - sd);
+        }
+    }
+    return e;
+}
+
+Eigen::Vector3d Simulation::totalMomentum() const
+{
+    const Particles& p = particles_;
+    Eigen::Vector3d m = Eigen::Vector3d::Zero();
+    for (std::size_t i = 0; i < p.size(); ++i)
+    {
+        m += p.mass[i]*Eigen::Vector3d(p.vx[i], p.vy[i], p.vz[i]);
+    }
+    return m;
+}
+
+StressSplit Simulation::stressSplit() const
+{
+    const Particles& p = particles_;
+    const int nSpecies = int(species_.size());
+    StressSplit J;
+    J.nSpecies = nSpecies;
+    J.kinetic.assign(nSpecies, Eigen::Matrix3d::Zero());
+    J.configurational.assign(numberOfSpeciesPairs(nSpecies), Eigen::Matrix3d::Zero());
+    const Eigen::Vector3d mean =
+        settings_.mode == CellMode::leesEdwards ? Eigen::Vector3d::Zero() : meanVelocity();
+    for (std::size_t i = 0; i < p.size(); ++i)
+    {
+        const Eigen::Vector3d c = fluctuatingVelocity(int(i)) - mean;
+        J.kinetic[p.species[i]] += p.mass[i]*c*c.transpose();
+    }
+    const std::vector<int>& f = list_.first();
+    const std::vector<int>& s = list_.second();
+    for (std::size_t k = 0; k < list_.size(); ++k)
+    {
+        if (!history_[k].touching) continue;
+        const int i = f[k], j = s[k];
+        double dx = p.x[i] - p.x[j], dy = p.y[i] - p.y[j], dz = p.z[i] - p.z[j], dvx = 0;
+        box_.minimumImage(dx, dy, dz, dvx);
+        const Eigen::Vector3d F(pfx_[k], pfy_[k], pfz_[k]);
+        const Eigen::Vector3d r(dx, dy, dz);
+        J.configurational[speciesPairIndex(p.species[i], p.species[j], nSpecies)] += F*r.transpose();
+    }
+    return J;
+}
+
+Eigen::Matrix3d Simulation::totalStress() const
+{
+    const Particles& p = particles_;
+    Eigen::Matrix3d J = Eigen::Matrix3d::Zero();
+    const Eigen::Vector3d mean =
+        settings_.mode == CellMode::leesEdwards ? Eigen::Vector3d::Zero() : meanVelocity();
+    for (std::size_t i = 0; i < p.size(); ++i)
+    {
+        const Eigen::Vector3d c = fluctuatingVelocity(int(i)) - mean;
+        J += p.mass[i]*c*c.transpose();
+    }
+    const std::vector<int>& f = list_.first();
+    const std::vector<int>& s = list_.second();
+    for (std::size_t k = 0; k < list_.size(); ++k)
+    {
+        if (!history_[k].touching) continue;
+        const int i = f[k], j = s[k];
+        double dx = p.x[i] - p.x[j], dy = p.y[i] - p.y[j], dz = p.z[i] - p.z[j], dvx = 0;
+        box_.minimumImage(dx, dy, dz, dvx);
+        J += Eigen::Vector3d(pfx_[k], pfy_[k], pfz_[k])*Eigen::Vector3d(dx, dy, dz).transpose();
+    }
+    return J;
+}
+
+void Simulation::enableCollisionStatistics(double eMin, double eMax, int nBins)
+{
+    collisions_.reset(int(species_.size()), eMin, eMax, nBins);
+    collisionsEnabled_ = true;
+}
+
+} // namespace sdf::dem

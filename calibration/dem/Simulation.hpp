@@ -1,0 +1,212 @@
+#ifndef sdf_dem_Simulation_hpp
+#define sdf_dem_Simulation_hpp
+
+// Periodic-cell DEM: velocity-Verlet integration of soft spheres in a (possibly
+// Lees-Edwards sheared) periodic box, with optional flat walls and a thermostat that
+// holds the granular temperature of a homogeneous cell.
+//
+// Reproducibility: pair forces are computed in parallel into per-pair slots and summed
+// per particle over its pairs in increasing pair order; the pair list is ordered (i, j).
+// No floating-point atomics, so a run is bitwise reproducible for a given seed; the force
+// sums do not even depend on the number of threads.
+
+#include "ContactLaw.hpp"
+#include "NeighbourList.hpp"
+#include "Particles.hpp"
+#include "PeriodicBox.hpp"
+#include "Species.hpp"
+
+#include <array>
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+
+namespace sdf::dem
+{
+
+enum class CellMode
+{
+    nve,            // plain Newtonian dynamics (energy conserved if elastic and frictionless)
+    thermostatted,  // homogeneous cell held at a target granular temperature
+    leesEdwards     // simple shear at a prescribed rate, T is an output
+};
+
+CellMode cellModeFromName(const std::string& name);
+std::string cellModeName(CellMode mode);
+
+struct SimulationSettings
+{
+    ContactSettings contact;
+    double timeStep = 0;                   // dt [s]; 0: use 0.5 x the maximum
+    double skin = -1;                      // Verlet skin [m]; < 0: 0.3 x smallest diameter
+    CellMode mode = CellMode::nve;
+    double targetTemperature = 0;          // T = <|c|^2> (sum of 3 components) [m^2/s^2]
+    double thermostatTime = 0;             // relaxation time tau_T [s]; 0: 50 dt
+    double shearRate = 0;                  // gammaDot [1/s] for Lees-Edwards
+    double maxOverlapFraction = 0.1;       // stop when delta/d_min exceeds this (<= 0: off)
+    double energyBlowUpFactor = 1e3;       // stop when E_kin > factor x reference
+    bool checkTimeStep = true;             // refuse dt above the recommended maximum
+    int threads = 0;                       // OpenMP threads; 0: runtime default
+};
+
+//- Flat frictional wall (infinitely heavy): point on the plane and unit normal into the domain.
+struct Wall
+{
+    Eigen::Vector3d point = Eigen::Vector3d::Zero();
+    Eigen::Vector3d normal = Eigen::Vector3d::UnitZ();
+};
+
+//- Per-species microscopic stress J (seed eqs 9-13, not divided by volume):
+//  kinetic[s] = sum_{i in s} m_i c_i c_i^T
+//  configurational[pair(s,t)] = sum_{contacts (i,j), species {s,t}} F_ij r_ij^T
+//  (entry (a,b) = F_a r_b; F_ij on i from j, r_ij = x_i - x_j; repulsion gives J_aa > 0)
+struct StressSplit
+{
+    int nSpecies = 0;
+    std::vector<Eigen::Matrix3d> kinetic;
+    std::vector<Eigen::Matrix3d> configurational;
+
+    //- J^s = kinetic[s] + configurational[(s,s)]
+    Eigen::Matrix3d speciesStress(int s) const;
+    //- J^{st}, s != t (configurational only)
+    Eigen::Matrix3d crossStress(int s, int t) const;
+    //- Sum of all parts (eq 13)
+    Eigen::Matrix3d sum() const;
+};
+
+//- Collision counts and impact-energy histograms per unordered species pair.
+//  Impact energy: 0.5 m* v_n^2 at the first step of a contact (normal, centre-of-mass frame).
+struct CollisionStatistics
+{
+    int nSpecies = 0;
+    std::vector<double> binEdges;            // nBins + 1 edges [J], log-spaced
+    std::vector<long> counts;                // per species pair
+    std::vector<std::vector<long>> histogram;// per species pair: nBins + 2 (under, bins, over)
+    std::vector<double> energySum;           // per species pair [J]
+    double elapsedTime = 0;                  // [s] time over which collisions were counted
+
+    void reset(int nSpecies, double eMin, double eMax, int nBins);
+    void clearCounts();
+    //- Collisions per unit time of one particle of species s with particles of species t.
+    double frequencyPerParticle(int s, int t, const std::vector<int>& speciesCounts) const;
+};
+
+class Simulation
+{
+public:
+    Simulation
+    (
+        std::vector<Species> species,
+        SimulationSettings settings,
+        Particles particles,
+        PeriodicBox box
+    );
+
+    // --- running
+    void step();
+    //- Runs n steps; calls observer(*this) every observeEvery steps (0: never); prints
+    //  progress (step, time, T, ETA) every progressEvery steps (0: never).
+    void run
+    (
+        long nSteps,
+        const std::function<void(const Simulation&)>& observer = {},
+        long observeEvery = 0,
+        long progressEvery = 0,
+        const std::string& label = "dem"
+    );
+
+    void addWall(const Wall& wall);
+
+    //- Forces a neighbour-list rebuild at the next force evaluation (after changing radii).
+    void invalidateNeighbourList() { listValid_ = false; }
+    //- Recomputes forces at the current state (e.g. after editing positions).
+    void refreshForces();
+    //- Multiplies all radii by factor (masses unchanged: used to grow packings).
+    void scaleRadii(double factor);
+
+    // --- state
+    const Particles& particles() const { return particles_; }
+    Particles& particles() { return particles_; }
+    const PeriodicBox& box() const { return box_; }
+    const std::vector<Species>& species() const { return species_; }
+    const ContactLaw& contactLaw() const { return law_; }
+    const SimulationSettings& settings() const { return settings_; }
+    double time() const { return time_; }
+    long stepCount() const { return stepCount_; }
+    double timeStep() const { return dt_; }
+    const NeighbourList& neighbourList() const { return list_; }
+    std::vector<int> speciesCounts() const;
+    void setTargetTemperature(double T) { settings_.targetTemperature = T; }
+    void setMode(CellMode mode) { settings_.mode = mode; }
+
+    // --- measurements
+    //- Fluctuating velocity of particle i (minus streaming or mean velocity).
+    Eigen::Vector3d fluctuatingVelocity(int i) const;
+    //- Granular temperature per species: T_s = <|c|^2> over species s (sum of 3 components).
+    std::vector<double> speciesTemperatures() const;
+    //- Number-averaged mixture temperature <|c|^2> over all particles.
+    double temperature() const;
+    double translationalKineticEnergy() const;   // of the full (lab) velocities
+    double rotationalKineticEnergy() const;
+    double elasticEnergy() const;                // normal springs + tangential springs
+    Eigen::Vector3d totalMomentum() const;
+    double maximumOverlapFraction() const { return lastMaxOverlapFraction_; }
+
+    StressSplit stressSplit() const;
+    //- Total stress J computed in one pass over all particles and contacts (reference for
+    //  the split).
+    Eigen::Matrix3d totalStress() const;
+
+    void enableCollisionStatistics(double eMin, double eMax, int nBins);
+    const CollisionStatistics& collisionStatistics() const { return collisions_; }
+    void resetCollisionStatistics() { collisions_.clearCounts(); }
+
+    //- Mass-weighted mean velocity of all particles.
+    Eigen::Vector3d meanVelocity() const;
+
+private:
+    void computeForces();
+    void rebuildNeighbourList();
+    bool neighbourListExpired() const;
+    void applyThermostat();
+    void checkEnergy() const;
+
+    std::vector<Species> species_;
+    SimulationSettings settings_;
+    ContactLaw law_;
+    Particles particles_;
+    PeriodicBox box_;
+    std::vector<Wall> walls_;
+
+    double dt_ = 0;
+    double skin_ = 0;
+    double time_ = 0;
+    long stepCount_ = 0;
+    int nThreads_ = 1;
+
+    NeighbourList list_;
+    bool listValid_ = false;
+    std::vector<ContactHistory> history_;
+    std::vector<double> pfx_, pfy_, pfz_, pcx_, pcy_, pcz_;   // per-pair force on i, n x F_t
+    std::vector<std::vector<ContactHistory>> wallHistory_;    // per wall, per particle
+
+    // synchronised velocity estimates v^{n+1/2} + dt/2 a^n
+    std::vector<double> svx_, svy_, svz_, swx_, swy_, swz_;
+    // peculiar displacement since the last list build (for the rebuild criterion)
+    std::vector<double> dispX_, dispY_, dispZ_;
+    double timeSinceBuild_ = 0;
+    double radiusGrowthSinceBuild_ = 0;
+
+    double lastMaxOverlapFraction_ = 0;
+    double referenceEnergy_ = 0;
+
+    bool collisionsEnabled_ = false;
+    CollisionStatistics collisions_;
+};
+
+} // namespace sdf::dem
+
+#endif
