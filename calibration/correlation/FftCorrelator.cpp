@@ -1,6 +1,6 @@
-#include "correlation/fft_correlator.hpp"
-#include "correlation/detail/padded_fft.hpp"
-#include "correlation/statistics.hpp"
+#include "correlation/FftCorrelator.hpp"
+#include "correlation/detail/PaddedFft.hpp"
+#include "correlation/Statistics.hpp"
 
 #include <gsl/gsl_errno.h>
 #include <gsl/gsl_fft_halfcomplex.h>

@@ -6,8 +6,8 @@
 //     C_ab(k) = 1/(N-k) * sum_{t=0}^{N-1-k} a(t) b(t+k),    k = 0 .. maxLag,
 // i.e. <a(0) b(k)> averaged over every available time origin (unbiased
 // estimator; its noise grows as k -> N, so keep maxLag well below N).
-#ifndef SDF_CORRELATION_FFT_CORRELATOR_HPP
-#define SDF_CORRELATION_FFT_CORRELATOR_HPP
+#ifndef sdf_correlation_FftCorrelator_hpp
+#define sdf_correlation_FftCorrelator_hpp
 
 #include <Eigen/Dense>
 

@@ -1,4 +1,4 @@
-#include "correlation/green_kubo.hpp"
+#include "correlation/GreenKubo.hpp"
 
 #include <cmath>
 #include <stdexcept>

@@ -4,10 +4,10 @@
 //   D = int_0^inf < v_x(0) v_x(t) > dt        (seed eq 14, per component)
 //   eta = int_0^inf < J_xy(0) J_xy(t) > dt    (seed eq 8, up to the caller's
 //                                              volume / temperature factor)
-#ifndef SDF_CORRELATION_GREEN_KUBO_HPP
-#define SDF_CORRELATION_GREEN_KUBO_HPP
+#ifndef sdf_correlation_GreenKubo_hpp
+#define sdf_correlation_GreenKubo_hpp
 
-#include "correlation/statistics.hpp"
+#include "correlation/Statistics.hpp"
 
 #include <cstddef>
 #include <vector>

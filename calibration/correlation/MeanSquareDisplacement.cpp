@@ -1,5 +1,5 @@
-#include "correlation/msd.hpp"
-#include "correlation/detail/padded_fft.hpp"
+#include "correlation/MeanSquareDisplacement.hpp"
+#include "correlation/detail/PaddedFft.hpp"
 
 #include <gsl/gsl_fit.h>
 

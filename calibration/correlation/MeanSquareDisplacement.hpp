@@ -5,11 +5,11 @@
 // also the image shift, and for shear flow the mean streaming displacement).
 // The MSD needs far fewer samples than the VACF: store positions every few
 // collision times and the memory stays small in long runs.
-#ifndef SDF_CORRELATION_MSD_HPP
-#define SDF_CORRELATION_MSD_HPP
+#ifndef sdf_correlation_MeanSquareDisplacement_hpp
+#define sdf_correlation_MeanSquareDisplacement_hpp
 
-#include "correlation/fft_correlator.hpp"
-#include "correlation/statistics.hpp"
+#include "correlation/FftCorrelator.hpp"
+#include "correlation/Statistics.hpp"
 
 #include <Eigen/Dense>
 

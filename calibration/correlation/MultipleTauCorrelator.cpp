@@ -1,4 +1,4 @@
-#include "correlation/multiple_tau.hpp"
+#include "correlation/MultipleTauCorrelator.hpp"
 
 #include <stdexcept>
 #include <string>

@@ -12,9 +12,9 @@
 // One correlator handles many channels at once (particles) and several
 // components (x, y, z; or several series products); the result is averaged
 // over channels and time origins, per component, with the same convention as
-// fft_correlator.hpp: C(k) = < a(t) b(t+k) >.
-#ifndef SDF_CORRELATION_MULTIPLE_TAU_HPP
-#define SDF_CORRELATION_MULTIPLE_TAU_HPP
+// FftCorrelator.hpp: C(k) = < a(t) b(t+k) >.
+#ifndef sdf_correlation_MultipleTauCorrelator_hpp
+#define sdf_correlation_MultipleTauCorrelator_hpp
 
 #include <Eigen/Dense>
 

@@ -1,7 +1,7 @@
 // Statistical estimates with honest standard errors: block averaging of one
 // trajectory and combination of independent replicas.
-#ifndef SDF_CORRELATION_STATISTICS_HPP
-#define SDF_CORRELATION_STATISTICS_HPP
+#ifndef sdf_correlation_Statistics_hpp
+#define sdf_correlation_Statistics_hpp
 
 #include <cstddef>
 #include <vector>

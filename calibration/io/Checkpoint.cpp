@@ -1,5 +1,5 @@
-#include "io/checkpoint.hpp"
-#include "io/hdf5_file.hpp"
+#include "io/Checkpoint.hpp"
+#include "io/Hdf5File.hpp"
 
 #include <set>
 

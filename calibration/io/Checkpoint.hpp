@@ -7,8 +7,8 @@
 // the tangential contact history (pair keys as int64, springs as N_c x 3),
 // step, time, the RNG state (string, from operator<<), and the correlators'
 // accumulated sums.
-#ifndef SDF_IO_CHECKPOINT_HPP
-#define SDF_IO_CHECKPOINT_HPP
+#ifndef sdf_io_Checkpoint_hpp
+#define sdf_io_Checkpoint_hpp
 
 #include <Eigen/Dense>
 

@@ -1,7 +1,7 @@
 // RAII ownership of one HDF5 identifier (file, group, dataset, attribute,
 // dataspace, datatype, property list): closed exactly once, in the destructor.
-#ifndef SDF_IO_HANDLE_HPP
-#define SDF_IO_HANDLE_HPP
+#ifndef sdf_io_Handle_hpp
+#define sdf_io_Handle_hpp
 
 #include <hdf5.h>
 

@@ -1,4 +1,4 @@
-#include "io/error.hpp"
+#include "io/Hdf5Error.hpp"
 
 namespace sdf::io
 {

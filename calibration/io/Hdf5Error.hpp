@@ -1,7 +1,7 @@
 // Exceptions of sdf::io: every failure names the file and the object path, so
 // a user can tell which of many calibration files (and which group) is wrong.
-#ifndef SDF_IO_ERROR_HPP
-#define SDF_IO_ERROR_HPP
+#ifndef sdf_io_Hdf5Error_hpp
+#define sdf_io_Hdf5Error_hpp
 
 #include <stdexcept>
 #include <string>

@@ -1,4 +1,4 @@
-#include "io/hdf5_file.hpp"
+#include "io/Hdf5File.hpp"
 
 #include <algorithm>
 #include <filesystem>

@@ -11,11 +11,11 @@
 //
 // Our files carry root attributes format = "segregationDegradationFoam-
 // calibration" and formatVersion; opening checks them.
-#ifndef SDF_IO_HDF5_FILE_HPP
-#define SDF_IO_HDF5_FILE_HPP
+#ifndef sdf_io_Hdf5File_hpp
+#define sdf_io_Hdf5File_hpp
 
-#include "io/error.hpp"
-#include "io/handle.hpp"
+#include "io/Hdf5Error.hpp"
+#include "io/Handle.hpp"
 
 #include <Eigen/Dense>
 

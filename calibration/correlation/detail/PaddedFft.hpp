@@ -1,7 +1,7 @@
 // Internal: raw lagged sums r(k) = sum_t a(t) b(t+k) by zero-padded radix-2
 // real FFTs (GSL), reusing one workspace for many series of equal length.
-#ifndef SDF_CORRELATION_DETAIL_PADDED_FFT_HPP
-#define SDF_CORRELATION_DETAIL_PADDED_FFT_HPP
+#ifndef sdf_correlation_detail_PaddedFft_hpp
+#define sdf_correlation_detail_PaddedFft_hpp
 
 #include <cstddef>
 #include <vector>

@@ -3,10 +3,10 @@
 // diffusivity per component is variance * tau (times the trapezoid factor of
 // the sampling, x coth x with x = dt / (2 tau), which both Green-Kubo
 // trapezoids and positions x += v dt reproduce exactly).
-#ifndef SDF_CORRELATION_TESTS_OU_PROCESS_HPP
-#define SDF_CORRELATION_TESTS_OU_PROCESS_HPP
+#ifndef sdf_correlation_tests_OrnsteinUhlenbeck_hpp
+#define sdf_correlation_tests_OrnsteinUhlenbeck_hpp
 
-#include "correlation/fft_correlator.hpp"
+#include "correlation/FftCorrelator.hpp"
 
 #include <cmath>
 #include <cstdint>

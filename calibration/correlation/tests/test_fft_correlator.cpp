@@ -1,4 +1,4 @@
-#include "correlation/fft_correlator.hpp"
+#include "correlation/FftCorrelator.hpp"
 
 #include <gtest/gtest.h>
 

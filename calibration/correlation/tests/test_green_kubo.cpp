@@ -1,6 +1,6 @@
-#include "correlation/green_kubo.hpp"
-#include "correlation/msd.hpp"
-#include "ou_process.hpp"
+#include "correlation/GreenKubo.hpp"
+#include "correlation/MeanSquareDisplacement.hpp"
+#include "OrnsteinUhlenbeck.hpp"
 
 #include <gtest/gtest.h>
 

@@ -1,5 +1,5 @@
-#include "correlation/msd.hpp"
-#include "correlation/green_kubo.hpp"
+#include "correlation/MeanSquareDisplacement.hpp"
+#include "correlation/GreenKubo.hpp"
 
 #include <gtest/gtest.h>
 

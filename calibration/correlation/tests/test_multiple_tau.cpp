@@ -1,6 +1,6 @@
-#include "correlation/multiple_tau.hpp"
-#include "correlation/green_kubo.hpp"
-#include "ou_process.hpp"
+#include "correlation/MultipleTauCorrelator.hpp"
+#include "correlation/GreenKubo.hpp"
+#include "OrnsteinUhlenbeck.hpp"
 
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-#include "correlation/statistics.hpp"
+#include "correlation/Statistics.hpp"
 
 #include <gtest/gtest.h>
 

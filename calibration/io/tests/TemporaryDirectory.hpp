@@ -1,6 +1,6 @@
 // Test helper: a fresh directory per test, removed afterwards.
-#ifndef SDF_IO_TESTS_TEMPORARY_DIRECTORY_HPP
-#define SDF_IO_TESTS_TEMPORARY_DIRECTORY_HPP
+#ifndef sdf_io_tests_TemporaryDirectory_hpp
+#define sdf_io_tests_TemporaryDirectory_hpp
 
 #include <gtest/gtest.h>
 

@@ -1,6 +1,6 @@
-#include "io/checkpoint.hpp"
-#include "io/hdf5_file.hpp"
-#include "temporary_directory.hpp"
+#include "io/Checkpoint.hpp"
+#include "io/Hdf5File.hpp"
+#include "TemporaryDirectory.hpp"
 
 #include <gtest/gtest.h>
 

@@ -1,5 +1,5 @@
-#include "io/hdf5_file.hpp"
-#include "temporary_directory.hpp"
+#include "io/Hdf5File.hpp"
+#include "TemporaryDirectory.hpp"
 
 #include <gtest/gtest.h>
 
