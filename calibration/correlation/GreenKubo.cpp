@@ -1,5 +1,6 @@
 #include "correlation/GreenKubo.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -237,6 +238,49 @@ GreenKuboResult greenKubo
     const double count = static_cast<double>(blocks);
     result.integral.standardError = std::sqrt((count - 1.0) / count * squares);
     return result;
+}
+
+GreenKuboResult greenKubo
+(
+    const std::vector<LaggedCorrelation>& blocks,
+    double sampleInterval,
+    int column,
+    const PlateauSettings& settings
+)
+{
+    if (blocks.empty())
+    {
+        throw std::invalid_argument("greenKubo: no blocks");
+    }
+    // Lags without pairs are dropped from the end of a block's grid, so the
+    // common grid is the shortest block's.
+    std::size_t lags = blocks.front().lags.size();
+    for (const LaggedCorrelation& block : blocks)
+    {
+        lags = std::min(lags, block.lags.size());
+        if (column < -1 || column >= block.values.cols())
+        {
+            throw std::invalid_argument
+            (
+                "greenKubo: column " + std::to_string(column) + " of "
+              + std::to_string(block.values.cols())
+            );
+        }
+    }
+    std::vector<std::vector<double>> correlations;
+    for (const LaggedCorrelation& block : blocks)
+    {
+        if (!std::equal(block.lags.begin(), block.lags.begin() + lags, blocks.front().lags.begin()))
+        {
+            throw std::invalid_argument("greenKubo: blocks have different lag grids");
+        }
+        std::vector<double> c = column < 0 ? block.columnMean() : block.column(column);
+        c.resize(lags);
+        correlations.push_back(std::move(c));
+    }
+    std::vector<double> times = blocks.front().times(sampleInterval);
+    times.resize(lags);
+    return greenKubo(times, correlations, settings);
 }
 
 } // namespace sdf::correlation

@@ -7,6 +7,7 @@
 #ifndef sdf_correlation_GreenKubo_hpp
 #define sdf_correlation_GreenKubo_hpp
 
+#include "correlation/MultipleTauCorrelator.hpp"
 #include "correlation/Statistics.hpp"
 
 #include <cstddef>
@@ -63,6 +64,18 @@ GreenKuboResult greenKubo
 (
     const std::vector<double>& times,
     const std::vector<std::vector<double>>& blockCorrelations,
+    const PlateauSettings& settings = PlateauSettings()
+);
+
+//- Green-Kubo from the blocks of a streaming correlator
+//  (MultipleTauCorrelator::blocks()): column `column` of the values, or the
+//  mean of all columns with column = -1 (isotropic VACF from x, y, z).
+//  Uses the lags common to all blocks; times = lag * sampleInterval.
+GreenKuboResult greenKubo
+(
+    const std::vector<LaggedCorrelation>& blocks,
+    double sampleInterval,
+    int column,
     const PlateauSettings& settings = PlateauSettings()
 );
 

@@ -1,5 +1,6 @@
 #include "correlation/MultipleTauCorrelator.hpp"
 
+#include <algorithm>
 #include <stdexcept>
 #include <string>
 
@@ -267,6 +268,180 @@ void MultipleTauCorrelator::closeBlock()
     blocks_.push_back(normalise(grid, blockStartSums_, blockStartCounts_));
     blockStartSums_ = std::move(grid.sums);
     blockStartCounts_ = std::move(grid.counts);
+}
+
+
+namespace
+{
+
+constexpr std::int64_t stateLayoutVersion = 1;
+
+void appendArray(std::vector<double>& reals, const Eigen::ArrayXXd& a)
+{
+    reals.insert(reals.end(), a.data(), a.data() + a.size());
+}
+
+// Reads the flat state back in the order exportState wrote it.
+class StateReader
+{
+public:
+    explicit StateReader(const MultipleTauState& state) : state_(state) {}
+
+    std::int64_t integer()
+    {
+        if (nextInteger_ >= state_.integers.size())
+        {
+            throw std::invalid_argument("MultipleTauCorrelator::importState: state too short");
+        }
+        return state_.integers[nextInteger_++];
+    }
+    std::size_t size() { return static_cast<std::size_t>(integer()); }
+    void array(Eigen::ArrayXXd& a)
+    {
+        const std::size_t n = static_cast<std::size_t>(a.size());
+        if (nextReal_ + n > state_.reals.size())
+        {
+            throw std::invalid_argument("MultipleTauCorrelator::importState: state too short");
+        }
+        std::copy(state_.reals.begin() + nextReal_, state_.reals.begin() + nextReal_ + n, a.data());
+        nextReal_ += n;
+    }
+    bool finished() const
+    {
+        return nextInteger_ == state_.integers.size() && nextReal_ == state_.reals.size();
+    }
+
+private:
+    const MultipleTauState& state_;
+    std::size_t nextInteger_ = 0;
+    std::size_t nextReal_ = 0;
+};
+
+} // namespace
+
+MultipleTauState MultipleTauCorrelator::exportState() const
+{
+    MultipleTauState state;
+    auto put = [&](std::uint64_t v) { state.integers.push_back(static_cast<std::int64_t>(v)); };
+    put(stateLayoutVersion);
+    put(channels_);
+    put(components_);
+    put(settings_.pointsPerLevel);
+    put(settings_.averagingFactor);
+    put(settings_.levels);
+    put(cross_ ? 1 : 0);
+    put(samplesAdded_);
+    for (const Level& level : levels_)
+    {
+        put(level.head);
+        put(level.filled);
+        put(level.accumulated);
+        for (std::uint64_t count : level.counts)
+        {
+            put(count);
+        }
+        for (const Eigen::ArrayXXd& slot : level.historyA)
+        {
+            appendArray(state.reals, slot);
+        }
+        for (const Eigen::ArrayXXd& slot : level.historyB)
+        {
+            appendArray(state.reals, slot);
+        }
+        appendArray(state.reals, level.sums);
+        appendArray(state.reals, level.accumulatorA);
+        if (cross_)
+        {
+            appendArray(state.reals, level.accumulatorB);
+        }
+    }
+    for (std::uint64_t count : blockStartCounts_)
+    {
+        put(count);
+    }
+    appendArray(state.reals, blockStartSums_);
+    put(blocks_.size());
+    for (const LaggedCorrelation& block : blocks_)
+    {
+        put(block.lags.size());
+        for (std::size_t i = 0; i < block.lags.size(); ++i)
+        {
+            put(block.lags[i]);
+            put(block.pairs[i]);
+        }
+        appendArray(state.reals, block.values);
+    }
+    return state;
+}
+
+void MultipleTauCorrelator::importState(const MultipleTauState& state)
+{
+    StateReader in(state);
+    const bool matches =
+        in.integer() == stateLayoutVersion
+     && in.size() == channels_
+     && in.size() == components_
+     && in.size() == settings_.pointsPerLevel
+     && in.size() == settings_.averagingFactor
+     && in.size() == settings_.levels
+     && (in.integer() != 0) == cross_;
+    if (!matches)
+    {
+        throw std::invalid_argument
+        (
+            "MultipleTauCorrelator::importState: the state comes from a correlator "
+            "with other channels, components, settings or mode"
+        );
+    }
+    // Fill a copy, so that a bad state leaves this correlator untouched.
+    MultipleTauCorrelator restored(*this);
+    restored.samplesAdded_ = static_cast<std::uint64_t>(in.integer());
+    for (Level& level : restored.levels_)
+    {
+        level.head = in.size();
+        level.filled = in.size();
+        level.accumulated = in.size();
+        for (std::uint64_t& count : level.counts)
+        {
+            count = static_cast<std::uint64_t>(in.integer());
+        }
+        for (Eigen::ArrayXXd& slot : level.historyA)
+        {
+            in.array(slot);
+        }
+        for (Eigen::ArrayXXd& slot : level.historyB)
+        {
+            in.array(slot);
+        }
+        in.array(level.sums);
+        in.array(level.accumulatorA);
+        if (cross_)
+        {
+            in.array(level.accumulatorB);
+        }
+    }
+    for (std::uint64_t& count : restored.blockStartCounts_)
+    {
+        count = static_cast<std::uint64_t>(in.integer());
+    }
+    in.array(restored.blockStartSums_);
+    restored.blocks_.assign(in.size(), LaggedCorrelation());
+    for (LaggedCorrelation& block : restored.blocks_)
+    {
+        const std::size_t lags = in.size();
+        for (std::size_t i = 0; i < lags; ++i)
+        {
+            block.lags.push_back(in.size());
+            block.pairs.push_back(static_cast<std::uint64_t>(in.integer()));
+        }
+        block.values.resize(static_cast<Eigen::Index>(lags), static_cast<Eigen::Index>(components_));
+        in.array(block.values);
+    }
+    if (!in.finished())
+    {
+        throw std::invalid_argument("MultipleTauCorrelator::importState: state too long");
+    }
+    *this = std::move(restored);
 }
 
 

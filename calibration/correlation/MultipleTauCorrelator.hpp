@@ -47,6 +47,14 @@ struct LaggedCorrelation
     std::vector<double> columnMean() const;
 };
 
+//- Everything a correlator has accumulated, as two flat arrays that fit a
+//  checkpoint (sdf::io::Checkpoint vectors / integerVectors).
+struct MultipleTauState
+{
+    std::vector<double> reals;
+    std::vector<std::int64_t> integers;
+};
+
 class MultipleTauCorrelator
 {
 public:
@@ -85,6 +93,13 @@ public:
     //  the Green-Kubo statistical error of a long streaming run.
     void closeBlock();
     const std::vector<LaggedCorrelation>& blocks() const { return blocks_; }
+
+    //- For checkpoints: a correlator restored with importState() and fed the
+    //  rest of the samples gives bit for bit the result of one never stopped.
+    MultipleTauState exportState() const;
+    //- Throws std::invalid_argument unless the state comes from a correlator
+    //  with the same channels, components, settings and mode.
+    void importState(const MultipleTauState& state);
 
 private:
     struct Level
@@ -147,6 +162,8 @@ public:
     );
 
     std::size_t seriesCount() const { return seriesCount_; }
+    MultipleTauState exportState() const { return correlator_.exportState(); }
+    void importState(const MultipleTauState& state) { correlator_.importState(state); }
     void add(const Eigen::Ref<const Eigen::VectorXd>& sample);
     void closeBlock() { correlator_.closeBlock(); }
 

@@ -112,19 +112,8 @@ TEST(MultipleTau, AgreesWithTheFftCorrelatorOnOrnsteinUhlenbeck)
 
     // Green-Kubo from the streamed blocks (log grid) vs the FFT blocks.
     ASSERT_EQ(mt.blocks().size(), blocks);
-    std::vector<std::vector<double>> streamedBlocks;
-    const std::size_t lagCount = 16 + 8 * 6;   // up to lag 15 * 2^6 = 960 samples (48 tau)
-    std::vector<double> times;
-    for (const LaggedCorrelation& b : mt.blocks())
-    {
-        ASSERT_GE(b.lags.size(), lagCount);
-        std::vector<double> c = b.columnMean();
-        c.resize(lagCount);
-        streamedBlocks.push_back(c);
-        times = b.times(ou.dt);
-        times.resize(lagCount);
-    }
-    const GreenKuboResult gkStreamed = greenKubo(times, streamedBlocks);
+    const GreenKuboResult gkStreamed = greenKubo(mt.blocks(), ou.dt, -1);
+    EXPECT_GE(gkStreamed.times.back(), 40.0 * ou.tau);
     const auto fftBlocks = blockVectorAutocorrelations(trajectory.velocities, 400, blocks);
     const GreenKuboResult gkFft = greenKubo(uniformTimes(401, ou.dt), componentSeries(fftBlocks, -1));
     ASSERT_TRUE(gkStreamed.plateauFound);
@@ -184,4 +173,63 @@ TEST(MultipleTau, SeriesProductsMatchTheFftProducts)
     // <J1(0) J12(5)> ~ 0.5 * 0.95^5 * var(smooth) is clearly non-zero; <J2 J1> is not.
     EXPECT_GT(r.values(5, SeriesProductCorrelator::column(0, 2, 3)), 1.5);
     EXPECT_NEAR(r.values(5, SeriesProductCorrelator::column(1, 0, 3)), 0.0, 0.3);
+}
+
+TEST(MultipleTau, ExportedStateResumesBitForBit)
+{
+    OuParameters ou;
+    ou.particles = 3;
+    ou.samples = 5000;
+    const auto trajectory = makeOuTrajectory(ou);
+    MultipleTauSettings settings;
+    settings.levels = 8;
+
+    MultipleTauCorrelator uninterrupted(3, 3, settings);
+    MultipleTauCorrelator first(3, 3, settings);
+    for (std::size_t t = 0; t < ou.samples; ++t)
+    {
+        uninterrupted.add(trajectory.velocities[t].array());
+        if ((t + 1) % 1000 == 0)
+        {
+            uninterrupted.closeBlock();
+        }
+        if (t < 2345)
+        {
+            first.add(trajectory.velocities[t].array());
+            if ((t + 1) % 1000 == 0)
+            {
+                first.closeBlock();
+            }
+        }
+    }
+    const MultipleTauState saved = first.exportState();
+
+    MultipleTauCorrelator resumed(3, 3, settings);
+    resumed.importState(saved);
+    EXPECT_EQ(resumed.samplesAdded(), 2345u);
+    for (std::size_t t = 2345; t < ou.samples; ++t)
+    {
+        resumed.add(trajectory.velocities[t].array());
+        if ((t + 1) % 1000 == 0)
+        {
+            resumed.closeBlock();
+        }
+    }
+    const LaggedCorrelation a = uninterrupted.result(), b = resumed.result();
+    EXPECT_EQ(a.lags, b.lags);
+    EXPECT_EQ(a.pairs, b.pairs);
+    EXPECT_TRUE((a.values == b.values).all());
+    ASSERT_EQ(resumed.blocks().size(), 5u);
+    EXPECT_TRUE((uninterrupted.blocks()[1].values == resumed.blocks()[1].values).all());
+    EXPECT_TRUE((uninterrupted.blocks()[4].values == resumed.blocks()[4].values).all());
+
+    // A state from another shape is refused and leaves the target untouched.
+    MultipleTauCorrelator other(2, 3, settings);
+    EXPECT_THROW(other.importState(saved), std::invalid_argument);
+    EXPECT_EQ(other.samplesAdded(), 0u);
+    MultipleTauState truncated = saved;
+    truncated.reals.pop_back();
+    MultipleTauCorrelator target(3, 3, settings);
+    EXPECT_THROW(target.importState(truncated), std::invalid_argument);
+    EXPECT_EQ(target.samplesAdded(), 0u);
 }
