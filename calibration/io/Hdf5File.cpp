@@ -810,7 +810,8 @@ void File::checkOurs() const
     {
         throw ForeignFileError(expected + ", found \"" + format + "\"", path_, "/");
     }
-    const std::int64_t version = top.hasAttribute("formatVersion") ? top.readInt64("formatVersion") : -1;
+    const std::int64_t version =
+        top.attributeType("formatVersion") == AttributeType::integer ? top.readInt64("formatVersion") : -1;
     if (version < 1 || version > currentFormatVersion)
     {
         throw ForeignFileError

@@ -11,6 +11,9 @@
 //
 // Our files carry root attributes format = "segregationDegradationFoam-
 // calibration" and formatVersion; opening checks them.
+//
+// The Debian HDF5 library is built without thread safety: use these classes
+// from one thread at a time (the DEM writes results after its OpenMP loops).
 #ifndef sdf_io_Hdf5File_hpp
 #define sdf_io_Hdf5File_hpp
 

@@ -260,6 +260,11 @@ TEST(Hdf5File, ForeignHdf5FilesAreRejectedNamingTheFile)
     message = expectThrowNamingFile<ForeignFileError>([&] { File::openReadOnly(newer); }, newer);
     EXPECT_NE(message.find("formatVersion"), std::string::npos) << message;
 
+    // A formatVersion of the wrong type is not ours either.
+    const std::string oddVersion = dir.file("oddVersion.h5");
+    File::create(oddVersion).root().setAttribute("formatVersion", 1.0);
+    expectThrowNamingFile<ForeignFileError>([&] { File::openReadOnly(oddVersion); }, oddVersion);
+
     const std::string ours = dir.file("ours.h5");
     File::create(ours);
     EXPECT_TRUE(File::isOurs(ours));
