@@ -1,0 +1,147 @@
+#include "correlation/StressGreenKubo.hpp"
+
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+namespace sdf::correlation
+{
+
+namespace
+{
+
+double ratioOfCrossToProducts(const StressProductIntegrals& r)
+{
+    double cross = 0.0, products = 0.0;
+    for (std::size_t i = 0; i < r.seriesCount; ++i)
+    {
+        for (std::size_t j = 0; j < r.seriesCount; ++j)
+        {
+            (i == j ? products : cross) += std::abs(r.term(i, j).integral.value);
+        }
+    }
+    return products > 0.0 ? cross / products : 0.0;
+}
+
+} // namespace
+
+StressProductIntegrals stressProductIntegrals
+(
+    const std::vector<double>& times,
+    const std::vector<SeriesProductCorrelations>& blocks,
+    const PlateauSettings& settings
+)
+{
+    if (blocks.empty())
+    {
+        throw std::invalid_argument("stressProductIntegrals: no blocks");
+    }
+    StressProductIntegrals result;
+    result.seriesCount = blocks.front().seriesCount();
+    for (std::size_t i = 0; i < result.seriesCount; ++i)
+    {
+        for (std::size_t j = 0; j < result.seriesCount; ++j)
+        {
+            std::vector<std::vector<double>> term;
+            for (const SeriesProductCorrelations& block : blocks)
+            {
+                if (block.seriesCount() != result.seriesCount)
+                {
+                    throw std::invalid_argument("stressProductIntegrals: blocks differ in series count");
+                }
+                term.push_back(block(i, j));
+            }
+            result.terms.push_back(greenKubo(times, term, settings));
+        }
+    }
+    std::vector<std::vector<double>> totals;
+    for (const SeriesProductCorrelations& block : blocks)
+    {
+        totals.push_back(block.total());
+    }
+    result.total = greenKubo(times, totals, settings);
+    result.crossToProductRatio = ratioOfCrossToProducts(result);
+    return result;
+}
+
+StressProductIntegrals stressProductIntegrals
+(
+    const std::vector<LaggedCorrelation>& blocks,
+    double sampleInterval,
+    std::size_t seriesCount,
+    const PlateauSettings& settings
+)
+{
+    if (blocks.empty())
+    {
+        throw std::invalid_argument("stressProductIntegrals: no blocks");
+    }
+    for (const LaggedCorrelation& block : blocks)
+    {
+        if (block.values.cols() != static_cast<Eigen::Index>(seriesCount * seriesCount))
+        {
+            throw std::invalid_argument
+            (
+                "stressProductIntegrals: blocks have " + std::to_string(block.values.cols())
+              + " columns, expected " + std::to_string(seriesCount * seriesCount)
+            );
+        }
+    }
+    StressProductIntegrals result;
+    result.seriesCount = seriesCount;
+    for (std::size_t c = 0; c < seriesCount * seriesCount; ++c)
+    {
+        result.terms.push_back(greenKubo(blocks, sampleInterval, static_cast<int>(c), settings));
+    }
+    // The total is the sum of the columns: the mean of the columns times S*S.
+    GreenKuboResult mean = greenKubo(blocks, sampleInterval, -1, settings);
+    const double factor = static_cast<double>(seriesCount * seriesCount);
+    mean.integral.value *= factor;
+    mean.integral.standardError *= factor;
+    for (auto* v : {&mean.meanCorrelation, &mean.correlationError,
+                    &mean.meanRunningIntegral, &mean.runningIntegralError})
+    {
+        for (double& x : *v)
+        {
+            x *= factor;
+        }
+    }
+    result.total = std::move(mean);
+    result.crossToProductRatio = ratioOfCrossToProducts(result);
+    return result;
+}
+
+std::vector<Estimate> kineticSievingCoefficients
+(
+    const StressProductIntegrals& integrals,
+    const std::vector<double>& composition
+)
+{
+    if (integrals.seriesCount != 3 || composition.size() != 2)
+    {
+        throw std::invalid_argument
+        (
+            "kineticSievingCoefficients: the seed's rule is for a binary mixture: "
+            "series (J^1, J^2, J^12) and two composition values"
+        );
+    }
+    const Estimate shared = integrals.term(2, 2).integral;
+    std::vector<Estimate> eta;
+    for (std::size_t s = 0; s < 2; ++s)
+    {
+        const Estimate own = integrals.term(s, s).integral;
+        const double c = composition[s];
+        eta.push_back
+        (
+            Estimate
+            {
+                own.value + c * shared.value,
+                std::hypot(own.standardError, c * shared.standardError),
+                own.samples
+            }
+        );
+    }
+    return eta;
+}
+
+} // namespace sdf::correlation

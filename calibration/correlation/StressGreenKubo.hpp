@@ -1,0 +1,65 @@
+// Green-Kubo integrals of the nine stress products of a binary mixture and
+// the seed's kinetic sieving rule (seed eqs 8-13):
+//   J = J^1 + J^2 + J^12,   <J(0) J(t)> = sum_{i,j} <J^i(0) J^j(t)>,
+//   eta_1 = int <J^1 J^1> + c_1 int <J^12 J^12>,
+//   eta_2 = int <J^2 J^2> + c_2 int <J^12 J^12>   (cross terms neglected),
+// with crossToProductRatio reported so that the neglect is checked, not assumed.
+#ifndef sdf_correlation_StressGreenKubo_hpp
+#define sdf_correlation_StressGreenKubo_hpp
+
+#include "correlation/FftCorrelator.hpp"
+#include "correlation/GreenKubo.hpp"
+#include "correlation/MultipleTauCorrelator.hpp"
+
+#include <vector>
+
+namespace sdf::correlation
+{
+
+struct StressProductIntegrals
+{
+    std::size_t seriesCount = 0;
+    //- Green-Kubo of C_ij = <s_i(0) s_j(t)>, index i * seriesCount + j.
+    std::vector<GreenKuboResult> terms;
+    //- Green-Kubo of the autocorrelation of the total (sum of all terms).
+    GreenKuboResult total;
+    //- sum_{i != j} |int C_ij| / sum_i |int C_ii| (plateau values).
+    double crossToProductRatio = 0.0;
+
+    const GreenKuboResult& term(std::size_t i, std::size_t j) const
+    {
+        return terms.at(i * seriesCount + j);
+    }
+};
+
+//- From per-block FFT product correlations on the uniform grid `times`.
+StressProductIntegrals stressProductIntegrals
+(
+    const std::vector<double>& times,
+    const std::vector<SeriesProductCorrelations>& blocks,
+    const PlateauSettings& settings = PlateauSettings()
+);
+
+//- From the blocks of a SeriesProductCorrelator (column i*S + j).
+StressProductIntegrals stressProductIntegrals
+(
+    const std::vector<LaggedCorrelation>& blocks,
+    double sampleInterval,
+    std::size_t seriesCount,
+    const PlateauSettings& settings = PlateauSettings()
+);
+
+//- The seed's rule for a binary mixture, series ordered (J^1, J^2, J^12):
+//  eta_i = I_ii + composition_i I_{12,12}. composition: the two species'
+//  shares of the solids (volume fractions of the solids, summing to 1).
+//  The errors add the two terms' errors in quadrature (their covariance is
+//  neglected).
+std::vector<Estimate> kineticSievingCoefficients
+(
+    const StressProductIntegrals& integrals,
+    const std::vector<double>& composition
+);
+
+} // namespace sdf::correlation
+
+#endif

@@ -1,0 +1,114 @@
+#include "correlation/StressGreenKubo.hpp"
+#include "OrnsteinUhlenbeck.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+
+using namespace sdf::correlation;
+using sdf::correlation::test::OuParameters;
+using sdf::correlation::test::makeOuTrajectory;
+
+// Three stress parts built from independent Ornstein-Uhlenbeck series a, b, c
+// (each integral D0 = variance tau): J1 = 2a, J2 = b, J12 = c + 0.3 J1. Exact:
+// I11 = 4 D0, I22 = D0, I33 = 1.36 D0, I13 = I31 = 1.2 D0, other cross terms 0.
+class StressGreenKubo : public ::testing::Test
+{
+protected:
+    void SetUp() override
+    {
+        ou_.particles = 1;
+        ou_.samples = 200000;
+        ou_.seed = 99;
+        const auto trajectory = makeOuTrajectory(ou_);
+        parts_.assign(3, std::vector<double>(ou_.samples));
+        for (std::size_t t = 0; t < ou_.samples; ++t)
+        {
+            const Eigen::RowVector3d abc = trajectory.velocities[t].row(0);
+            parts_[0][t] = 2.0 * abc(0);
+            parts_[1][t] = abc(1);
+            parts_[2][t] = abc(2) + 0.3 * parts_[0][t];
+        }
+    }
+
+    double exact(std::size_t i, std::size_t j) const
+    {
+        const double table[3][3] = {{4.0, 0.0, 1.2}, {0.0, 1.0, 0.0}, {1.2, 0.0, 1.36}};
+        return table[i][j] * ou_.sampledDiffusivity();
+    }
+
+    OuParameters ou_;
+    std::vector<std::vector<double>> parts_;
+};
+
+TEST_F(StressGreenKubo, NineProductIntegralsRatioAndSeedRule)
+{
+    const std::size_t blockCount = 10, maxLag = 400;
+    std::vector<SeriesProductCorrelations> blocks;
+    for (std::size_t b = 0; b < blockCount; ++b)
+    {
+        const IndexRange range = blockRange(ou_.samples, blockCount, b);
+        std::vector<std::vector<double>> slice;
+        for (const auto& p : parts_)
+        {
+            slice.emplace_back(p.begin() + range.begin, p.begin() + range.end);
+        }
+        blocks.push_back(seriesProductCorrelations(slice, maxLag));
+    }
+    const StressProductIntegrals r = stressProductIntegrals(uniformTimes(maxLag + 1, ou_.dt), blocks);
+    const double d0 = ou_.sampledDiffusivity();
+    for (std::size_t i = 0; i < 3; ++i)
+    {
+        for (std::size_t j = 0; j < 3; ++j)
+        {
+            const Estimate& e = r.term(i, j).integral;
+            EXPECT_NEAR(e.value, exact(i, j), 3.5 * e.standardError) << "term " << i << j;
+            EXPECT_LT(e.standardError, 0.1 * std::max(std::abs(exact(i, j)), d0)) << "term " << i << j;
+        }
+    }
+    double sum = 0.0;
+    for (std::size_t i = 0; i < 3; ++i)
+    {
+        for (std::size_t j = 0; j < 3; ++j)
+        {
+            sum += exact(i, j);
+        }
+    }
+    EXPECT_NEAR(r.total.integral.value, sum, 3.5 * r.total.integral.standardError);
+    EXPECT_NEAR(r.crossToProductRatio, 2.4 / 6.36, 0.04);
+
+    const std::vector<Estimate> eta = kineticSievingCoefficients(r, {0.3, 0.7});
+    ASSERT_EQ(eta.size(), 2u);
+    EXPECT_NEAR(eta[0].value, (4.0 + 0.3 * 1.36) * d0, 3.5 * eta[0].standardError);
+    EXPECT_NEAR(eta[1].value, (1.0 + 0.7 * 1.36) * d0, 3.5 * eta[1].standardError);
+    EXPECT_THROW(kineticSievingCoefficients(r, {1.0}), std::invalid_argument);
+    std::cout << "[ figures  ] I11 " << r.term(0, 0).integral.value << " +- " << r.term(0, 0).integral.standardError
+              << " (exact " << exact(0, 0) << "), I13 " << r.term(0, 2).integral.value << " +- "
+              << r.term(0, 2).integral.standardError << " (exact " << exact(0, 2) << "), cross/product "
+              << r.crossToProductRatio << " (exact " << 2.4 / 6.36 << ")\n";
+
+    // The streaming correlator gives the same integrals within their errors.
+    SeriesProductCorrelator streaming(3);
+    const std::size_t blockLength = ou_.samples / blockCount;
+    for (std::size_t t = 0; t < ou_.samples; ++t)
+    {
+        streaming.add(Eigen::Vector3d(parts_[0][t], parts_[1][t], parts_[2][t]));
+        if ((t + 1) % blockLength == 0)
+        {
+            streaming.closeBlock();
+        }
+    }
+    const StressProductIntegrals s = stressProductIntegrals(streaming.blocks(), ou_.dt, 3);
+    for (std::size_t i = 0; i < 3; ++i)
+    {
+        for (std::size_t j = 0; j < 3; ++j)
+        {
+            const double combined = std::hypot(s.term(i, j).integral.standardError, r.term(i, j).integral.standardError);
+            EXPECT_NEAR(s.term(i, j).integral.value, r.term(i, j).integral.value, 3.0 * combined) << i << j;
+        }
+    }
+    EXPECT_NEAR(s.total.integral.value, r.total.integral.value,
+                3.0 * std::hypot(s.total.integral.standardError, r.total.integral.standardError));
+    EXPECT_THROW(stressProductIntegrals(streaming.blocks(), ou_.dt, 2), std::invalid_argument);
+}
