@@ -162,12 +162,13 @@ GreenKuboResult greenKubo
 )
 {
     const std::size_t blocks = blockCorrelations.size();
-    if (blocks < 2)
+    // The jackknife's leave-one-out sets need >= 2 blocks for their own noise.
+    if (blocks < 3)
     {
         throw std::invalid_argument
         (
-            "greenKubo: needs >= 2 independent blocks or replicas for an error, got "
-          + std::to_string(blocks)
+            "greenKubo: needs >= 3 independent blocks or replicas for an error "
+            "(8 to 20 recommended), got " + std::to_string(blocks)
         );
     }
     const std::size_t n = times.size();

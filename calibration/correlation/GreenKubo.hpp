@@ -59,7 +59,9 @@ struct GreenKuboResult
 };
 
 //- blockCorrelations[b][k]: the correlation function at times[k] measured on
-//  block (or replica) b; >= 2 independent blocks are needed for an error.
+//  block (or replica) b; >= 3 independent blocks are needed (8 to 20 are
+//  recommended: fewer make the error itself uncertain, more make each block
+//  short compared with the correlation time).
 GreenKuboResult greenKubo
 (
     const std::vector<double>& times,
