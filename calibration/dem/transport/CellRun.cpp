@@ -1,0 +1,344 @@
+#include "CellRun.hpp"
+#include "InitialState.hpp"
+
+#include "correlation/MeanSquareDisplacement.hpp"
+#include "correlation/MultipleTauCorrelator.hpp"
+#include "correlation/Statistics.hpp"
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <sstream>
+#include <stdexcept>
+
+namespace sdf::dem
+{
+
+void validateCellRunSettings(const CellRunSettings& s)
+{
+    validateSpecies(s.species);
+    validateContactSettings(s.simulation.contact);
+    if (s.volumeFractions.size() != s.species.size())
+    {
+        throw std::invalid_argument("volumeFractions: one value per species required");
+    }
+    if (s.particles < 2) throw std::invalid_argument("particles must be >= 2");
+    if (!(s.samplingTime > 0)) throw std::invalid_argument("samplingTime must be positive");
+    if (!(s.equilibrationTime >= 0)) throw std::invalid_argument("equilibrationTime must be >= 0");
+    if (s.sampleEvery < 1) throw std::invalid_argument("sampleEvery must be >= 1");
+    if (s.blocks < 2) throw std::invalid_argument("blocks must be >= 2 (errors need two)");
+    if (s.simulation.mode == CellMode::leesEdwards && !(std::abs(s.simulation.shearRate) > 0))
+    {
+        throw std::invalid_argument("shearRate must be non-zero for a leesEdwards cell");
+    }
+}
+
+namespace
+{
+
+correlation::MultipleTauSettings correlatorSettings()
+{
+    correlation::MultipleTauSettings m;
+    m.pointsPerLevel = 16;
+    m.averagingFactor = 2;
+    m.levels = 24;
+    return m;
+}
+
+} // namespace
+
+CellRunResult runCell(const CellRunSettings& settings)
+{
+    validateCellRunSettings(settings);
+    using clock = std::chrono::steady_clock;
+    CellRunResult result;
+    result.settings = settings;
+    const std::vector<Species>& species = settings.species;
+    const int nSpecies = int(species.size());
+
+    // mean diameter weighted by solids volume
+    {
+        double sum = 0, wsum = 0;
+        for (int s = 0; s < nSpecies; ++s)
+        {
+            sum += settings.volumeFractions[s]*species[s].diameter;
+            wsum += settings.volumeFractions[s];
+        }
+        result.meanDiameter = sum/wsum;
+    }
+
+    PackingSettings ps;
+    ps.solidsFraction = settings.solidsFraction;
+    ps.counts = countsFromVolumeFractions(species, settings.volumeFractions, settings.particles);
+    ps.seed = settings.seed;
+    Packing packing = makePacking(species, ps);
+
+    const SimulationSettings& sim0 = settings.simulation;
+    double T0 = settings.initialTemperature;
+    if (T0 < 0)
+    {
+        T0 = sim0.mode == CellMode::leesEdwards
+            ? std::pow(sim0.shearRate*result.meanDiameter, 2)
+            : sim0.targetTemperature;
+    }
+    const double shearRate = sim0.mode == CellMode::leesEdwards ? sim0.shearRate : 0.0;
+    assignVelocities(packing.particles, packing.box, T0, shearRate, settings.seed);
+    result.boxLength = packing.box.lx;
+
+    Simulation sim(species, sim0, packing.particles, packing.box);
+    result.timeStep = sim.timeStep();
+    result.speciesCounts = sim.speciesCounts();
+    const double dt = sim.timeStep();
+
+    // --- equilibration: windows of equilibrationTime/4; equilibrated when the mean T of
+    // two consecutive windows differs by < 3 % after the minimum time
+    {
+        const double maxTime = settings.maxEquilibrationTime > 0
+            ? settings.maxEquilibrationTime : 5*settings.equilibrationTime;
+        const long window = std::max(1L, std::lround(0.25*settings.equilibrationTime/dt));
+        double previous = -1;
+        double elapsed = 0;
+        while (elapsed < maxTime || previous < 0)
+        {
+            double sumT = 0;
+            long n = 0;
+            sim.run(window, [&](const Simulation& x) { sumT += x.temperature(); ++n; },
+                    std::max(1L, window/50), settings.progressEvery, settings.label + " equilibration");
+            elapsed += window*dt;
+            const double meanT = n ? sumT/n : sim.temperature();
+            if (elapsed >= settings.equilibrationTime && previous > 0
+             && std::abs(meanT - previous) < 0.03*meanT)
+            {
+                result.equilibrated = true;
+                break;
+            }
+            previous = meanT;
+            if (settings.equilibrationTime == 0) { result.equilibrated = true; break; }
+        }
+        result.equilibrationTime = elapsed;
+    }
+
+    // --- sampling
+    const int comp = sim0.mode == CellMode::leesEdwards ? 1 : -1;
+    result.diffusionComponent = comp;
+    const long totalSteps = std::max(1L, std::lround(settings.samplingTime/dt));
+    const long nSamples = std::max(1L, totalSteps/settings.sampleEvery);
+    const long samplesPerBlock = std::max(1L, nSamples/settings.blocks);
+    const double sampleInterval = settings.sampleEvery*dt;
+    const long msdEvery = std::max(1L, (nSamples + settings.maxMsdFrames - 1)/settings.maxMsdFrames);
+
+    std::vector<std::vector<int>> members(nSpecies);
+    for (int i = 0; i < int(sim.particles().size()); ++i)
+    {
+        members[sim.particles().species[i]].push_back(i);
+    }
+    std::vector<correlation::MultipleTauCorrelator> vacf;
+    for (int s = 0; s < nSpecies; ++s)
+    {
+        vacf.emplace_back(std::max<std::size_t>(1, members[s].size()), 3, correlatorSettings());
+    }
+    std::vector<correlation::VectorFrames> frames(nSpecies);
+
+    // stress series: species parts, then cross parts
+    std::vector<std::pair<int, int>> parts;
+    for (int s = 0; s < nSpecies; ++s)
+    {
+        parts.push_back({s, s});
+        result.stressSeriesNames.push_back("J_" + species[s].name);
+    }
+    for (int s = 0; s < nSpecies; ++s)
+    {
+        for (int t = s + 1; t < nSpecies; ++t)
+        {
+            parts.push_back({s, t});
+            result.stressSeriesNames.push_back("J_" + species[s].name + "_" + species[t].name);
+        }
+    }
+    const std::size_t nSeries = parts.size();
+    correlation::SeriesProductCorrelator stressCorrelator(nSeries, correlatorSettings());
+    result.meanStress.assign(nSeries, 0.0);
+    const double volume = sim.box().volume();
+    const double sqrtV = std::sqrt(volume);
+
+    std::vector<double> temperatureSeries;
+    std::vector<std::vector<double>> speciesT(nSpecies);
+
+    double eScale = 0.5*species[0].mass()*std::max(T0, 1e-30);
+    sim.enableCollisionStatistics(1e-4*eScale, 1e3*eScale, 56);
+
+    long sample = 0;
+    const auto start = clock::now();
+    auto observe = [&](const Simulation& x)
+    {
+        const Particles& p = x.particles();
+        for (int s = 0; s < nSpecies; ++s)
+        {
+            const std::vector<int>& m = members[s];
+            if (m.empty()) continue;
+            Eigen::ArrayXXd v(m.size(), 3);
+            for (std::size_t k = 0; k < m.size(); ++k)
+            {
+                const Eigen::Vector3d c = x.fluctuatingVelocity(m[k]);
+                v(k, 0) = c.x(); v(k, 1) = c.y(); v(k, 2) = c.z();
+            }
+            vacf[s].add(v);
+            if (sample % msdEvery == 0)
+            {
+                Eigen::MatrixX3d pos(m.size(), 3);
+                for (std::size_t k = 0; k < m.size(); ++k)
+                {
+                    pos(k, 0) = p.ux[m[k]]; pos(k, 1) = p.uy[m[k]]; pos(k, 2) = p.uz[m[k]];
+                }
+                frames[s].push_back(pos);
+            }
+        }
+        const StressSplit J = x.stressSplit();
+        Eigen::VectorXd series(nSeries);
+        for (std::size_t k = 0; k < nSeries; ++k)
+        {
+            const auto [a, b] = parts[k];
+            const Eigen::Matrix3d Jk = a == b ? J.speciesStress(a) : J.crossStress(a, b);
+            series[k] = Jk(0, 1)/sqrtV;
+            result.meanStress[k] += Jk(0, 1)/volume;
+        }
+        stressCorrelator.add(series);
+        temperatureSeries.push_back(x.temperature());
+        const std::vector<double> ts = x.speciesTemperatures();
+        for (int s = 0; s < nSpecies; ++s) speciesT[s].push_back(ts[s]);
+        ++sample;
+        if (sample % samplesPerBlock == 0 && sample/samplesPerBlock <= settings.blocks)
+        {
+            for (auto& c : vacf) c.closeBlock();
+            stressCorrelator.closeBlock();
+        }
+    };
+    sim.run(totalSteps, observe, settings.sampleEvery, settings.progressEvery, settings.label);
+    result.wallSeconds = std::chrono::duration<double>(clock::now() - start).count();
+    result.steps = totalSteps;
+    result.particleStepsPerSecond = double(totalSteps)*sim.particles().size()/result.wallSeconds;
+    for (double& m : result.meanStress) m /= std::max(1L, sample);
+
+    // --- analysis
+    const correlation::Estimate T = correlation::blockAverage(temperatureSeries, settings.blocks);
+    result.temperature = T.value;
+    result.temperatureError = T.standardError;
+    if (sim0.mode == CellMode::leesEdwards && T.value > 0)
+    {
+        result.savageJeffreyR = result.meanDiameter*std::abs(sim0.shearRate)*std::sqrt(3.0/T.value);
+    }
+    correlation::PlateauSettings plateau;
+    plateau.earliestTime = sampleInterval;
+    for (int s = 0; s < nSpecies; ++s)
+    {
+        SpeciesTransport st;
+        st.name = species[s].name;
+        st.count = int(members[s].size());
+        double sumT = 0;
+        for (double v : speciesT[s]) sumT += v;
+        st.temperature = speciesT[s].empty() ? 0 : sumT/speciesT[s].size();
+        if (!members[s].empty() && vacf[s].blocks().size() >= 2)
+        {
+            st.greenKubo = correlation::greenKubo(vacf[s].blocks(), sampleInterval, comp, plateau);
+        }
+        // Einstein: MSD of y (sheared) or x+y+z (homogeneous), fit over the last 3/4 of
+        // the lag range, per block
+        const std::size_t nFrames = frames[s].size();
+        const std::size_t nBlocks = std::size_t(settings.blocks);
+        if (!members[s].empty() && nFrames >= 8*nBlocks)
+        {
+            const std::size_t maxLag = nFrames/nBlocks/2;
+            const auto blockMsd = correlation::blockMeanSquareDisplacements(frames[s], maxLag, nBlocks);
+            const double frameInterval = msdEvery*sampleInterval;
+            std::vector<double> times(maxLag + 1);
+            for (std::size_t k = 0; k <= maxLag; ++k) times[k] = k*frameInterval;
+            std::vector<std::vector<double>> series;
+            for (const Eigen::MatrixX3d& b : blockMsd)
+            {
+                std::vector<double> v(maxLag + 1);
+                for (std::size_t k = 0; k <= maxLag; ++k)
+                {
+                    v[k] = comp == 1 ? b(k, 1) : b(k, 0) + b(k, 1) + b(k, 2);
+                }
+                series.push_back(v);
+            }
+            const auto einstein = correlation::einsteinDiffusivity
+            (
+                times, series, 0.25*times.back(), times.back(), comp == 1 ? 1 : 3
+            );
+            st.diffusivityMsd = einstein.diffusivity;
+            st.msdTimes = times;
+            st.msd = einstein.meanMsd;
+        }
+        result.species.push_back(st);
+    }
+    if (stressCorrelator.blocks().size() >= 2)
+    {
+        result.stressIntegrals = correlation::stressProductIntegrals
+        (
+            stressCorrelator.blocks(), sampleInterval, nSeries, plateau
+        );
+        if (nSpecies == 2)
+        {
+            result.kineticSieving = correlation::kineticSievingCoefficients
+            (
+                result.stressIntegrals, settings.volumeFractions
+            );
+        }
+    }
+    result.collisions = sim.collisionStatistics();
+    return result;
+}
+
+std::string summary(const CellRunResult& r)
+{
+    std::ostringstream out;
+    const auto& s = r.settings;
+    out << "periodic cell: " << cellModeName(s.simulation.mode) << ", N = " << s.particles
+        << ", phi = " << s.solidsFraction << ", box " << r.boxLength << " m, dt = "
+        << r.timeStep << " s, " << contactModelName(s.simulation.contact.model)
+        << ", e = " << s.simulation.contact.restitution << ", mu = "
+        << s.simulation.contact.friction << "\n";
+    out << "  equilibrated: " << (r.equilibrated ? "yes" : "NO") << " after "
+        << r.equilibrationTime << " s\n";
+    out << "  T = " << r.temperature << " +- " << r.temperatureError
+        << " m2/s2 (sum of 3 components; T1 = T/3)\n";
+    if (s.simulation.mode == CellMode::leesEdwards)
+    {
+        out << "  gammaDot = " << s.simulation.shearRate << " 1/s, Savage-Jeffrey R = "
+            << r.savageJeffreyR << "\n";
+    }
+    for (const SpeciesTransport& st : r.species)
+    {
+        out << "  " << st.name << " (" << st.count << "): T = " << st.temperature
+            << ", D_GK = " << st.greenKubo.integral.value << " +- "
+            << st.greenKubo.integral.standardError << " m2/s"
+            << (st.greenKubo.plateauFound ? "" : " (no plateau)")
+            << ", D_MSD = " << st.diffusivityMsd.value << " +- "
+            << st.diffusivityMsd.standardError << " m2/s\n";
+    }
+    for (std::size_t k = 0; k < r.kineticSieving.size(); ++k)
+    {
+        out << "  eta_" << r.species[k].name << " = " << r.kineticSieving[k].value << " +- "
+            << r.kineticSieving[k].standardError << "\n";
+    }
+    if (!r.stressIntegrals.terms.empty())
+    {
+        out << "  stress ACF cross/product ratio = " << r.stressIntegrals.crossToProductRatio << "\n";
+    }
+    const int n = int(r.species.size());
+    for (int a = 0; a < n; ++a)
+    {
+        for (int b = a; b < n; ++b)
+        {
+            out << "  collisions " << r.species[a].name << "-" << r.species[b].name << ": "
+                << r.collisions.counts[speciesPairIndex(a, b, n)] << ", per "
+                << r.species[a].name << " particle "
+                << r.collisions.frequencyPerParticle(a, b, r.speciesCounts) << " 1/s\n";
+        }
+    }
+    out << "  throughput " << r.particleStepsPerSecond << " particle-steps/s ("
+        << r.steps << " steps, " << r.wallSeconds << " s)\n";
+    return out.str();
+}
+
+} // namespace sdf::dem

@@ -1,0 +1,93 @@
+#ifndef sdf_dem_CellRun_hpp
+#define sdf_dem_CellRun_hpp
+
+// One calibration cell from start to finish: packing, equilibration (detected from the
+// granular temperature), sampling of per-species velocity autocorrelations (multiple-tau,
+// many time origins, block errors), mean-square displacements, the stress split
+// J^1, J^2, J^12 (xy components) and their nine product correlations, collision
+// statistics. Green-Kubo and Einstein estimates come from sdf_correlation.
+
+#include "Simulation.hpp"
+
+#include "correlation/GreenKubo.hpp"
+#include "correlation/StressGreenKubo.hpp"
+
+#include <string>
+#include <vector>
+
+namespace sdf::dem
+{
+
+struct CellRunSettings
+{
+    std::vector<Species> species;
+    std::vector<double> volumeFractions;   // solids volume fraction of each species (sum 1)
+    int particles = 1000;
+    double solidsFraction = 0.3;
+    SimulationSettings simulation;         // contact law, dt, mode, target T, shear rate
+    double initialTemperature = -1;        // < 0: target T, or (gammaDot d_mean)^2 if sheared
+    double equilibrationTime = 0;          // [s] minimum equilibration
+    double maxEquilibrationTime = 0;       // [s] 0: 5 x equilibrationTime
+    double samplingTime = 0;               // [s]
+    int sampleEvery = 10;                  // steps between correlator samples
+    int blocks = 8;                        // independent blocks for the errors
+    int maxMsdFrames = 400;                // stored position frames for the MSD
+    std::uint64_t seed = 1;
+    long progressEvery = 0;                // steps between progress lines (0: quiet)
+    std::string label = "periodicDEM";
+};
+
+//- Throws std::invalid_argument naming the entry.
+void validateCellRunSettings(const CellRunSettings& settings);
+
+struct SpeciesTransport
+{
+    std::string name;
+    int count = 0;
+    double temperature = 0;                       // <|c|^2> over the sampling
+    correlation::GreenKuboResult greenKubo;       // D from the VACF (per component)
+    correlation::Estimate diffusivityMsd;         // Einstein slope, block error
+    std::vector<double> msdTimes, msd;            // mean MSD (per component)
+};
+
+struct CellRunResult
+{
+    CellRunSettings settings;
+    double timeStep = 0;
+    double boxLength = 0;
+    double meanDiameter = 0;               // solids-volume weighted
+    double temperature = 0;                // mixture <|c|^2> over the sampling
+    double temperatureError = 0;           // block standard error
+    double savageJeffreyR = 0;             // d_mean gammaDot sqrt(3/T) (sheared cells)
+    bool equilibrated = false;
+    double equilibrationTime = 0;
+    std::vector<SpeciesTransport> species;
+    //- diffusion component: -1 isotropic mean (homogeneous cells), 1 = y (sheared cells)
+    int diffusionComponent = -1;
+    // stress: series s_k = J_xy^k / sqrt(V), k over species parts then cross parts
+    std::vector<std::string> stressSeriesNames;
+    std::vector<double> meanStress;        // time mean of J_xy^k / V [Pa]
+    correlation::StressProductIntegrals stressIntegrals;
+    std::vector<correlation::Estimate> kineticSieving;   // binary mixtures only
+    CollisionStatistics collisions;
+    std::vector<int> speciesCounts;
+    long steps = 0;
+    double wallSeconds = 0;
+    double particleStepsPerSecond = 0;
+};
+
+CellRunResult runCell(const CellRunSettings& settings);
+
+//- Human-readable summary.
+std::string summary(const CellRunResult& result);
+
+#ifdef SDF_DEM_HAVE_HDF5
+//- Writes inputs, timings, T, R, D_i with errors, correlation functions, stress ACF terms
+//  and collision statistics to an HDF5 file, atomically (written to <path>.tmp and renamed:
+//  a failed run never leaves a half-written file under the final name). Layout: docs/dem.md.
+void writeCellRun(const CellRunResult& result, const std::string& path);
+#endif
+
+} // namespace sdf::dem
+
+#endif
