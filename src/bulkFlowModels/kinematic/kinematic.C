@@ -16,7 +16,6 @@
 #include "uniformDimensionedFields.H"
 #include "zeroGradientFvPatchFields.H"
 #include "fixedValueFvPatchFields.H"
-#include "mixedFvPatchFields.H"
 #include "wallFvPatch.H"
 #include "mathematicalConstants.H"
 
@@ -179,8 +178,8 @@ void Foam::bulkFlowModels::kinematic::solveVelocity()
     }
     const vector gHat(g.value()/mag(g.value()));
 
-    // Downward speed v: 1 on the outlets (scaled later), 0 on downward
-    // facing walls (a flat base), no horizontal flux on other walls
+    // Downward speed v: 1 on the outlets (scaled later), no flux of v
+    // through walls
     wordList vTypes
     (
         mesh.boundary().size(),
@@ -189,13 +188,6 @@ void Foam::bulkFlowModels::kinematic::solveVelocity()
     for (const label patchi : outletPatches_)
     {
         vTypes[patchi] = fixedValueFvPatchScalarField::typeName;
-    }
-    forAll(mesh.boundary(), patchi)
-    {
-        if (isA<wallFvPatch>(mesh.boundary()[patchi]))
-        {
-            vTypes[patchi] = mixedFvPatchScalarField::typeName;
-        }
     }
 
     volScalarField v
@@ -210,29 +202,25 @@ void Foam::bulkFlowModels::kinematic::solveVelocity()
             false
         ),
         mesh,
-        dimensionedScalar("s", dimVelocity, Zero),
+        dimensionedScalar("v", dimVelocity, Zero),
         vTypes
     );
-
-    forAll(mesh.boundary(), patchi)
+    for (const label patchi : outletPatches_)
     {
-        fvPatchScalarField& vp = v.boundaryFieldRef()[patchi];
-        if (isA<fixedValueFvPatchScalarField>(vp))
-        {
-            vp == scalar(1);
-        }
-        else if (isA<mixedFvPatchScalarField>(vp))
-        {
-            mixedFvPatchScalarField& mp =
-                refCast<mixedFvPatchScalarField>(vp);
-            const vectorField nf(mesh.boundary()[patchi].nf());
-            mp.refValue() = 0;
-            mp.refGrad() = 0;
-            mp.valueFraction() = pos0((nf & gHat) - 0.9);
-        }
+        v.boundaryFieldRef()[patchi] == scalar(1);
     }
 
-    const surfaceScalarField phiUp("phiUp", -(mesh.Sf() & gHat));
+    // The "upward" flux of the marching equation. Zero through walls: the
+    // conservative form then keeps the integral of v over every horizontal
+    // section constant (the discharge rate), whatever the wall's slope
+    surfaceScalarField phiUp("phiUp", -(mesh.Sf() & gHat));
+    forAll(mesh.boundary(), patchi)
+    {
+        if (isA<wallFvPatch>(mesh.boundary()[patchi]))
+        {
+            phiUp.boundaryFieldRef()[patchi] = Zero;
+        }
+    }
     const surfaceTensorField Bh
     (
         IOobject
@@ -311,13 +299,28 @@ void Foam::bulkFlowModels::kinematic::solveVelocity()
         pTypes
     );
 
+    mesh.setFluxRequired(pK.name());
     const dictionary pControls(solverControls(mesh, "pKinematic", true));
+    tmp<fv::laplacianScheme<scalar, scalar>> pLapScheme
+    (
+        fv::laplacianScheme<scalar, scalar>::New
+        (
+            mesh,
+            IStringStream("Gauss linear corrected")()
+        )
+    );
+    const surfaceScalarField unity
+    (
+        IOobject("unity", mesh.time().timeName(), mesh),
+        mesh,
+        dimensionedScalar("one", dimless, 1)
+    );
     const surfaceScalarField phiNT(phi_);
     for (int corr = 0; corr < 4; ++corr)
     {
         fvScalarMatrix pEqn
         (
-            fvm::laplacian(pK, "laplacian(pKinematic)")
+            pLapScheme->fvmLaplacian(unity, pK)
          == fvc::div(phiNT)
         );
         pEqn.solve(pControls);
@@ -339,7 +342,15 @@ void Foam::bulkFlowModels::kinematic::solveVelocity()
     }
     phi_ *= Q_/outflow;
 
-    U_ = fvc::reconstruct(phi_);
+    // U for output and for the shear rate: the Nedderman-Tuzun velocity
+    // scaled to the same discharge (smooth, where a reconstruction of the
+    // projected flux is not on the cells next to the outlet)
+    scalar outflowNT = 0;
+    for (const label patchi : outletPatches_)
+    {
+        outflowNT += gSum(phiNT.boundaryField()[patchi]);
+    }
+    U_ *= Q_/outflowNT;
     U_.correctBoundaryConditions();
 
     const volScalarField divPhi(fvc::div(phi_));

@@ -8,6 +8,7 @@
 
 #include "diffusivityModel.H"
 #include "zeroGradientFvPatchFields.H"
+#include "wallFvPatch.H"
 
 namespace Foam
 {
@@ -72,6 +73,63 @@ Foam::tmp<Foam::volScalarField> Foam::diffusivityModel::Dmixture
     // Empty cells: c_i = 0 gives sum_i D_i/(N-1), already 0 by presence
     Dmix.correctBoundaryConditions();
     return tDmix;
+}
+
+
+// ************************************************************************* //
+
+
+Foam::tmp<Foam::surfaceScalarField>
+Foam::diffusivityModel::faceDiffusivity(const volScalarField& D)
+{
+    const fvMesh& mesh = D.mesh();
+
+    auto harmonicMean = [](const scalar a, const scalar b)
+    {
+        const scalar sum = a + b;
+        return sum > VSMALL ? 2*a*b/sum : scalar(0);
+    };
+
+    tmp<surfaceScalarField> tDf
+    (
+        surfaceScalarField::New
+        (
+            "Df",
+            mesh,
+            dimensionedScalar("Df", D.dimensions(), Zero)
+        )
+    );
+    surfaceScalarField& Df = tDf.ref();
+
+    const labelUList& own = mesh.owner();
+    const labelUList& nei = mesh.neighbour();
+    scalarField& Dfi = Df.primitiveFieldRef();
+    forAll(Dfi, facei)
+    {
+        Dfi[facei] = harmonicMean(D[own[facei]], D[nei[facei]]);
+    }
+
+    forAll(mesh.boundary(), patchi)
+    {
+        const fvPatch& p = mesh.boundary()[patchi];
+        fvsPatchScalarField& Dfp = Df.boundaryFieldRef()[patchi];
+        const fvPatchScalarField& Dp = D.boundaryField()[patchi];
+
+        if (Dp.coupled())
+        {
+            const scalarField Dlocal(Dp.patchInternalField());
+            const scalarField Dremote(Dp.patchNeighbourField());
+            forAll(Dfp, facei)
+            {
+                Dfp[facei] = harmonicMean(Dlocal[facei], Dremote[facei]);
+            }
+        }
+        // Other patches keep Dfp = 0: only the bulk flow carries material
+        // across a boundary, diffusion never does (walls, inlets, outlets,
+        // the open top of a silo)
+    }
+
+    return tDf;
 }
 
 

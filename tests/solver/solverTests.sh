@@ -1,0 +1,182 @@
+# Solver-level tests of segregationDegradationFoam, sourced by tests/run.
+# Each function runs in a subshell with the OpenFOAM environment; it prints
+# what it measured and returns non-zero on failure. Work directories live
+# under $workRoot (build/tests).
+
+validationDir="$projectDir/tutorials/validation"
+fieldStats="$projectDir/tests/solver/fieldStats.py"
+
+# Fresh copy of a case without run outputs
+copy_case()
+{
+    local from="$1" to="$2"
+    rm -rf "$to"
+    mkdir -p "$to"
+    cp -r "$from/0.orig" "$from/constant" "$from/system" "$to/"
+    [ -f "$from/Allrun" ] && cp "$from/Allrun" "$from/Allclean" "$to/" 2>/dev/null
+    rm -rf "$to/constant/polyMesh"
+    true
+}
+
+test_unit_models()
+{
+    local dir="$workRoot/unitCase"
+    rm -rf "$dir"; cp -r tests/unit/testCase "$dir"
+    blockMesh -case "$dir" > "$dir/log.blockMesh" 2>&1 || return 1
+    granularModelsTest -case "$dir"
+}
+
+# A small prepared column case (validation column, 10 cells) for bad input
+prepare_small_case()
+{
+    local dir="$1"
+    copy_case "$validationDir/segregationDiffusionColumn" "$dir"
+    echo "N 10; endTime 0.05;" > "$dir/system/caseParameters"
+    blockMesh -case "$dir" > "$dir/log.blockMesh" 2>&1 || return 1
+    cp -r "$dir/0.orig" "$dir/0"
+}
+
+# test_bad_input KIND: break the case one way, expect a fatal error that
+# names the entry, and no time directory written
+test_bad_input()
+{
+    local kind="$1" dir="$workRoot/badInput-$1" expect=()
+    prepare_small_case "$dir" || return 1
+    local gp="$dir/constant/granularProperties"
+    case "$kind" in
+        unknownModel)
+            foamDictionary -entry diffusivity/model -set fancy "$gp" > /dev/null
+            expect=("Unknown diffusivity model type fancy" "powerLaw" "kineticTheory" "constant" "none") ;;
+        missingField)
+            rm "$dir/0/n.coarse"
+            expect=("n.coarse") ;;
+        badDiameter)
+            foamDictionary -entry species/coarse/d -set -2e-3 "$gp" > /dev/null
+            expect=("Non-positive diameter" "coarse") ;;
+        negativeInitial)
+            foamDictionary -entry internalField -set "uniform -0.1" "$dir/0/n.fine" > /dev/null
+            expect=("n.fine" "-0.1" ">= 0") ;;
+        nanInitial)
+            sed -i 's/^internalField .*/internalField   uniform nan;/' "$dir/0/n.fine"
+            expect=("n.fine") ;;
+        missingCoefficient)
+            foamDictionary -entry percolation/grayThorntonCoeffs/Sr -remove "$gp" > /dev/null
+            expect=("Sr" "grayThorntonCoeffs") ;;
+        missingMechanism)
+            foamDictionary -entry kineticSieving -remove "$gp" > /dev/null
+            expect=("kineticSieving") ;;
+        *) echo "unknown kind $kind"; return 1 ;;
+    esac
+
+    if segregationDegradationFoam -case "$dir" > "$dir/log.solver" 2>&1
+    then
+        echo "solver accepted bad input ($kind)"; return 1
+    fi
+    cat "$dir/log.solver" | sed -n '/FOAM FATAL/,/FOAM exiting\|FOAM aborting/p' | head -20
+    local e
+    for e in "${expect[@]}"
+    do
+        if ! grep -qF -- "$e" "$dir/log.solver"
+        then
+            echo "error message lacks '$e'"; return 1
+        fi
+    done
+    if grep -q "Segmentation\|printStack" "$dir/log.solver"
+    then
+        echo "crashed instead of a clear error"; return 1
+    fi
+    local written
+    written=$(find "$dir" -mindepth 1 -maxdepth 1 -type d -regextype posix-extended -regex '.*/[0-9.eE+-]+' ! -name 0 | head -1)
+    [ -z "$written" ] || { echo "a time directory was written: $written"; return 1; }
+    echo "clear fatal error for $kind, nothing written"
+}
+
+# Closed box (cyclic in x, walls elsewhere) with shear flow, percolation,
+# kinetic sieving and diffusion, a partly empty initial state: mass of every
+# species conserved to 1e-10 relative, 0 <= n_i <= phi at all times
+test_closed_box()
+{
+    local dir="$workRoot/closedBox"
+    rm -rf "$dir"; cp -r tests/solver/closedBox "$dir"
+    blockMesh -case "$dir" > "$dir/log.blockMesh" 2>&1 || { cat "$dir/log.blockMesh"; return 1; }
+    cp -r "$dir/0.orig" "$dir/0"
+    setFields -case "$dir" > "$dir/log.setFields" 2>&1 || { cat "$dir/log.setFields"; return 1; }
+    segregationDegradationFoam -case "$dir" > "$dir/log.solver" 2>&1 || { tail -30 "$dir/log.solver"; return 1; }
+    python3 - "$dir/log.solver" <<'PY' || return 1
+import re, sys
+vols = {}
+for line in open(sys.argv[1]):
+    if line.startswith("Solids:"):
+        for name, v in re.findall(r"(n\.\w+) volume (\S+)", line):
+            vols.setdefault(name, []).append(float(v))
+ok = True
+for name, v in vols.items():
+    rel = max(abs(x - v[0]) for x in v) / v[0]
+    print("%s: initial volume %.12e, max relative change over %d steps %.2e" % (name, v[0], len(v), rel))
+    ok &= rel < 1e-10
+if not vols or len(next(iter(vols.values()))) < 10:
+    print("too few steps parsed"); ok = False
+sys.exit(0 if ok else 1)
+PY
+    python3 "$fieldStats" "$dir" changed --tol 0.05 || return 1
+    python3 "$fieldStats" "$dir" bounds --tol 1e-8
+}
+
+# silo2D for a few seconds: the top cells go from full to empty, every field
+# stays finite and bounded, and the solids that left through the outlet
+# balance the loss of solids in the silo
+test_silo_empties()
+{
+    local dir="$workRoot/siloEmpties"
+    copy_case "$projectDir/tutorials/silo2D" "$dir"
+    foamDictionary -entry writeFields -set "(T gammaDot dMean D nTotal)" "$dir/constant/granularProperties" > /dev/null
+    foamDictionary -entry endTime -set 4 "$dir/system/controlDict" > /dev/null
+    foamDictionary -entry writeInterval -set 1 "$dir/system/controlDict" > /dev/null
+    : > "$dir/system/caseParameters"
+    blockMesh -case "$dir" > "$dir/log.blockMesh" 2>&1 || return 1
+    cp -r "$dir/0.orig" "$dir/0"
+    segregationDegradationFoam -case "$dir" > "$dir/log.solver" 2>&1 || { tail -30 "$dir/log.solver"; return 1; }
+    python3 "$fieldStats" "$dir" emptied || return 1
+    python3 "$fieldStats" "$dir" bounds --tol 1e-8 || return 1
+    python3 - "$dir" <<'PY'
+import re, sys
+case = sys.argv[1]
+total = [float(m.group(1)) for m in re.finditer(r"Solids: total volume (\S+)", open(case + "/log.solver").read())]
+# volume of solids leaving: sum over species of cumulative mass / rho (2500)
+rows = [l.split() for l in open(case + "/postProcessing/outletComposition/0/outlet.dat") if not l.startswith("#")]
+cum = sum(float(x) for x in rows[-1][-2:]) / 2500.0
+top = [l.split() for l in open(case + "/postProcessing/outletComposition/0/top.dat") if not l.startswith("#")]
+cumTop = sum(float(x) for x in top[-1][-2:]) / 2500.0
+initial = total[0] + sum(float(x) for x in rows[0][-2:]) / 2500.0  # first logged step already lost a little
+balance = (initial - total[-1]) - (cum + cumTop)
+print("solids lost from the silo %.6e m3, left through outlet+top %.6e m3, imbalance %.2e (relative %.2e)"
+      % (initial - total[-1], cum + cumTop, balance, abs(balance) / (initial - total[-1])))
+sys.exit(0 if abs(balance) / (initial - total[-1]) < 1e-6 else 1)
+PY
+}
+
+# silo2D decomposed on 2 ranks gives the serial answer to solver tolerance
+test_silo_parallel()
+{
+    local serial="$workRoot/siloSerial" parallel="$workRoot/siloParallel"
+    local d
+    for d in "$serial" "$parallel"
+    do
+        copy_case "$projectDir/tutorials/silo2D" "$d"
+        foamDictionary -entry endTime -set 1 "$d/system/controlDict" > /dev/null
+        foamDictionary -entry writeInterval -set 1 "$d/system/controlDict" > /dev/null
+        : > "$d/system/caseParameters"
+        blockMesh -case "$d" > "$d/log.blockMesh" 2>&1 || return 1
+        cp -r "$d/0.orig" "$d/0"
+    done
+    segregationDegradationFoam -case "$serial" > "$serial/log.solver" 2>&1 || { tail -20 "$serial/log.solver"; return 1; }
+    decomposePar -case "$parallel" > "$parallel/log.decomposePar" 2>&1 || { tail -20 "$parallel/log.decomposePar"; return 1; }
+    mpirun -np 2 segregationDegradationFoam -parallel -case "$parallel" > "$parallel/log.solver" 2>&1 || { tail -20 "$parallel/log.solver"; return 1; }
+    reconstructPar -latestTime -case "$parallel" > "$parallel/log.reconstructPar" 2>&1 || return 1
+    python3 "$fieldStats" "$parallel" compare "$serial" --tol 1e-8
+}
+
+test_convergence_study()
+{
+    tutorials/validation/convergenceStudy --no-docs --work "$workRoot/validation"
+}
