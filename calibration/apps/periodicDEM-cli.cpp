@@ -13,8 +13,10 @@
 //   restitution, friction, normalStiffness, tangentialStiffnessRatio,
 //   tangentialDampingRatio, youngsModulus, poissonRatio
 //   timeStep (0: half the recommended maximum), threads, seed
-//   equilibrationTime, samplingTime [s], sampleEvery [steps], blocks
-//   progressEvery [steps], output (HDF5 file), label
+//   equilibrationTime, maxEquilibrationTime, samplingTime [s], sampleEvery [steps], blocks
+//   progressEvery [steps], output (HDF5 file), label, skin [m]
+//   lammpsData (write the initial state as a LAMMPS data file), throughputOnly (1: no
+//   measurements, only T; for speed comparisons)
 #include "CellRun.hpp"
 
 #include <fstream>
@@ -43,7 +45,8 @@ const std::set<std::string> validKeys =
     "shearRate", "model", "restitution", "friction", "normalStiffness",
     "tangentialStiffnessRatio", "tangentialDampingRatio", "youngsModulus", "poissonRatio",
     "timeStep", "threads", "seed", "equilibrationTime", "samplingTime", "sampleEvery",
-    "blocks", "progressEvery", "output", "label", "thermostatTime", "maxOverlapFraction"
+    "blocks", "progressEvery", "output", "label", "thermostatTime", "maxOverlapFraction",
+    "lammpsData", "throughputOnly", "skin", "maxEquilibrationTime"
 };
 
 void addPair(std::map<std::string, std::string>& config, const std::string& line, const std::string& where)
@@ -132,11 +135,15 @@ CellRunSettings settingsFrom(const std::map<std::string, std::string>& c)
     sim.threads = int(number(c, "threads", 0));
     s.seed = std::uint64_t(number(c, "seed", 1));
     s.equilibrationTime = number(c, "equilibrationTime", 0.0);
+    s.maxEquilibrationTime = number(c, "maxEquilibrationTime", 0.0);
     s.samplingTime = number(c, "samplingTime", 0.0);
     s.sampleEvery = int(number(c, "sampleEvery", 10));
     s.blocks = int(number(c, "blocks", 8));
     s.progressEvery = long(number(c, "progressEvery", 0));
     s.label = text(c, "label", "periodicDEM");
+    s.lammpsDataFile = text(c, "lammpsData", "");
+    s.throughputOnly = number(c, "throughputOnly", 0) != 0;
+    sim.skin = number(c, "skin", -1);
     return s;
 }
 

@@ -6,6 +6,7 @@
 #include "correlation/Statistics.hpp"
 
 #include <chrono>
+#include <fstream>
 #include <cmath>
 #include <cstdio>
 #include <sstream>
@@ -84,6 +85,14 @@ CellRunResult runCell(const CellRunSettings& settings)
     const double shearRate = sim0.mode == CellMode::leesEdwards ? sim0.shearRate : 0.0;
     assignVelocities(packing.particles, packing.box, T0, shearRate, settings.seed);
     result.boxLength = packing.box.lx;
+    if (!settings.lammpsDataFile.empty())
+    {
+        writeLammpsData
+        (
+            settings.lammpsDataFile, packing.particles, packing.box, species,
+            0.5*shearRate*packing.box.ly
+        );
+    }
 
     Simulation sim(species, sim0, packing.particles, packing.box);
     result.timeStep = sim.timeStep();
@@ -167,6 +176,32 @@ CellRunResult runCell(const CellRunSettings& settings)
     sim.enableCollisionStatistics(1e-4*eScale, 1e3*eScale, 56);
 
     long sample = 0;
+    if (settings.throughputOnly)
+    {
+        std::vector<double> ts;
+        const auto t0 = clock::now();
+        sim.run(totalSteps, [&](const Simulation& x) { ts.push_back(x.temperature()); },
+                settings.sampleEvery, settings.progressEvery, settings.label);
+        result.wallSeconds = std::chrono::duration<double>(clock::now() - t0).count();
+        result.steps = totalSteps;
+        result.particleStepsPerSecond = double(totalSteps)*sim.particles().size()/result.wallSeconds;
+        const correlation::Estimate T = correlation::blockAverage(ts, settings.blocks);
+        result.temperature = T.value;
+        result.temperatureError = T.standardError;
+        if (sim0.mode == CellMode::leesEdwards && T.value > 0)
+        {
+            result.savageJeffreyR = result.meanDiameter*std::abs(sim0.shearRate)*std::sqrt(3.0/T.value);
+        }
+        for (int s = 0; s < nSpecies; ++s)
+        {
+            SpeciesTransport st;
+            st.name = species[s].name;
+            st.count = int(members[s].size());
+            result.species.push_back(st);
+        }
+        result.collisions = sim.collisionStatistics();
+        return result;
+    }
     const auto start = clock::now();
     auto observe = [&](const Simulation& x)
     {
@@ -240,7 +275,7 @@ CellRunResult runCell(const CellRunSettings& settings)
         {
             st.greenKubo = correlation::greenKubo(vacf[s].blocks(), sampleInterval, comp, plateau);
         }
-        // Einstein: MSD of y (sheared) or x+y+z (homogeneous), fit over the last 3/4 of
+        // Einstein: MSD of y (sheared) or x+y+z (homogeneous), fit over the last 60 % of
         // the lag range, per block
         const std::size_t nFrames = frames[s].size();
         const std::size_t nBlocks = std::size_t(settings.blocks);
@@ -263,7 +298,7 @@ CellRunResult runCell(const CellRunSettings& settings)
             }
             const auto einstein = correlation::einsteinDiffusivity
             (
-                times, series, 0.25*times.back(), times.back(), comp == 1 ? 1 : 3
+                times, series, 0.4*times.back(), times.back(), comp == 1 ? 1 : 3
             );
             st.diffusivityMsd = einstein.diffusivity;
             st.msdTimes = times;
@@ -289,6 +324,36 @@ CellRunResult runCell(const CellRunSettings& settings)
     return result;
 }
 
+void writeLammpsData
+(
+    const std::string& path,
+    const Particles& p,
+    const PeriodicBox& box,
+    const std::vector<Species>& species,
+    double streamingShift
+)
+{
+    std::ofstream out(path);
+    if (!out) throw std::runtime_error("cannot write LAMMPS data file '" + path + "'");
+    out.precision(17);
+    out << "LAMMPS data file written by sdf_dem (SI units)\n\n"
+        << p.size() << " atoms\n" << species.size() << " atom types\n\n"
+        << "0 " << box.lx << " xlo xhi\n0 " << box.ly << " ylo yhi\n0 " << box.lz << " zlo zhi\n"
+        << box.offset << " 0 0 xy xz yz\n\nAtoms # sphere\n\n";
+    for (std::size_t i = 0; i < p.size(); ++i)
+    {
+        const Species& s = species[p.species[i]];
+        out << i + 1 << " " << p.species[i] + 1 << " " << 2*p.radius[i] << " " << s.density
+            << " " << p.x[i] << " " << p.y[i] << " " << p.z[i] << "\n";
+    }
+    out << "\nVelocities\n\n";
+    for (std::size_t i = 0; i < p.size(); ++i)
+    {
+        out << i + 1 << " " << p.vx[i] + streamingShift << " " << p.vy[i] << " " << p.vz[i] << " "
+            << p.wx[i] << " " << p.wy[i] << " " << p.wz[i] << "\n";
+    }
+}
+
 std::string summary(const CellRunResult& r)
 {
     std::ostringstream out;
@@ -306,6 +371,12 @@ std::string summary(const CellRunResult& r)
     {
         out << "  gammaDot = " << s.simulation.shearRate << " 1/s, Savage-Jeffrey R = "
             << r.savageJeffreyR << "\n";
+    }
+    if (r.settings.throughputOnly)
+    {
+        out << "  throughput " << r.particleStepsPerSecond << " particle-steps/s ("
+            << r.steps << " steps, " << r.wallSeconds << " s)\n";
+        return out.str();
     }
     for (const SpeciesTransport& st : r.species)
     {

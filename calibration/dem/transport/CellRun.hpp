@@ -31,11 +31,29 @@ struct CellRunSettings
     double samplingTime = 0;               // [s]
     int sampleEvery = 10;                  // steps between correlator samples
     int blocks = 8;                        // independent blocks for the errors
-    int maxMsdFrames = 400;                // stored position frames for the MSD
+    int maxMsdFrames = 2000;               // stored position frames for the MSD
     std::uint64_t seed = 1;
     long progressEvery = 0;                // steps between progress lines (0: quiet)
     std::string label = "periodicDEM";
+    //- If set: the initial state (after packing and velocities) is also written as a
+    //  LAMMPS data file (atom_style sphere, triclinic box) for peer comparisons.
+    std::string lammpsDataFile;
+    //- If set: measurements are skipped, the cell only runs (throughput benchmarks);
+    //  T is still sampled every sampleEvery steps.
+    bool throughputOnly = false;
 };
+
+//- LAMMPS data file (atom_style sphere: id type diameter density x y z; velocities).
+//  streamingShift is added to vx (LAMMPS' deforming box streams as u = gammaDot (y - ylo),
+//  ours as gammaDot (y - ly/2)).
+void writeLammpsData
+(
+    const std::string& path,
+    const Particles& particles,
+    const PeriodicBox& box,
+    const std::vector<Species>& species,
+    double streamingShift = 0
+);
 
 //- Throws std::invalid_argument naming the entry.
 void validateCellRunSettings(const CellRunSettings& settings);
