@@ -60,13 +60,21 @@ OMP_NUM_THREADS=1 "$cli" "$out/cell.cfg" threads=1 equilibrationTime=$tEquil \
     maxEquilibrationTime=$tEquil samplingTime=$tRun lammpsData="$out/cell.data" \
     | tee "$out/ours-1thread.log"
 echo "== ours, 2 threads"
-OMP_NUM_THREADS=2 "$cli" "$out/cell.cfg" threads=2 equilibrationTime=$tEquil \
+OMP_WAIT_POLICY=passive OMP_NUM_THREADS=2 "$cli" "$out/cell.cfg" threads=2 equilibrationTime=$tEquil \
     samplingTime=$tRun | tee "$out/ours-2threads.log"
 
 echo "== LAMMPS, 1 process"
 kt=$(awk -v k=$kn -v r=$ktRatio 'BEGIN{printf "%.10g", k*r}')
+# constant dashpots per type pair: gamma_n = -2 ln(e) sqrt(m* kn)/sqrt(pi^2 + ln^2 e)
+read -r g11 g12 g22 <<<"$(awk -v k=$kn -v e=$e 'BEGIN{
+    pi = 3.141592653589793; le = log(e)
+    mf = 2500*pi/6*1e-9; mc = 2500*pi/6*8e-9
+    c = -2*le/sqrt(pi*pi + le*le)
+    printf "%.10g %.10g %.10g", c*sqrt(mf/2*k), c*sqrt(mf*mc/(mf + mc)*k), c*sqrt(mc/2*k) }')"
+
 (cd "$out" && OMP_NUM_THREADS=1 lmp -in "$here/in.shear" -log lammps.log -screen none \
-    -var data cell.data -var kn $kn -var e $e -var kt $kt -var xgammat $xgammat \
+    -var data cell.data -var kn $kn -var g11 $g11 -var g12 $g12 -var g22 $g22 \
+    -var kt $kt -var xgammat $xgammat \
     -var mu $mu -var gd $gd -var dt $dt -var skin $skin \
     -var nequil $nEquil -var nrun $nRun)
 
@@ -84,6 +92,7 @@ T2, T2err, rate2 = ours("ours-2threads.log")
 log = open(f"{out}/lammps.log").read()
 loops = re.findall(r"Loop time of ([0-9.eE+-]+) on (\d+) procs for (\d+) steps with (\d+) atoms", log)
 loopTime, procs, steps, atoms = loops[-1]
+cpu = re.findall(r"([0-9.]+)% CPU use", log)[-1]
 lammpsRate = int(steps)*int(atoms)/float(loopTime)
 # T from the thermo lines of the production run (second run block)
 blocks = log.split("Loop time of")
@@ -91,7 +100,7 @@ prod = blocks[-2].split("Step")[-1].splitlines()[1:]
 vals = [float(l.split()[2]) for l in prod if len(l.split()) == 3 and l.split()[0].isdigit()]
 vals = vals[1:]
 mean = sum(vals)/len(vals)
-nb = 4; m = len(vals)//nb
+nb = max(2, min(4, len(vals))); m = len(vals)//nb
 bm = [sum(vals[k*m:(k+1)*m])/m for k in range(nb)]
 err = (sum((b-mean)**2 for b in bm)/(nb*(nb-1)))**0.5
 gdd = 100*1.5e-3
@@ -99,7 +108,7 @@ report = f"""N = {N}, phi = 0.5, fines 1 mm / coarse 2 mm (equal solids volume),
 kn = 2000 N/m, dt = 1e-6 s, gammaDot = 100 1/s, {nRun} production steps
 T (m2/s2, sum of 3 components):  ours {T1:.5g} +- {T1err:.2g}   LAMMPS {mean:.5g} +- {err:.2g}
 T / (gammaDot d_mean)^2:          ours {T1/gdd**2:.4g}            LAMMPS {mean/gdd**2:.4g}
-throughput (particle-steps/s, 1 core): ours {rate1:.4g}   LAMMPS {lammpsRate:.4g}   ratio {rate1/lammpsRate:.3g}
+throughput (particle-steps/s, 1 core, wall clock): ours {rate1:.4g}   LAMMPS {lammpsRate:.4g} ({cpu} % CPU use)   ratio {rate1/lammpsRate:.3g}
 ours on 2 threads: {rate2:.4g} particle-steps/s (speed-up {rate2/rate1:.3g}; shared 2-core machine)
 """
 print(report)
