@@ -180,3 +180,35 @@ test_convergence_study()
 {
     tutorials/validation/convergenceStudy --no-docs --work "$workRoot/validation"
 }
+
+# Kinematic bulk flow on silo2D: the Beverloo rate by hand, the wedge's share
+# of it through the outlet, a divergence-free flux and the outlet record
+test_kinematic_discharge()
+{
+    local dir="$workRoot/kinematicDischarge"
+    copy_case "$projectDir/tutorials/silo2D" "$dir"
+    foamDictionary -entry endTime -set 0.01 "$dir/system/controlDict" > /dev/null
+    : > "$dir/system/caseParameters"
+    blockMesh -case "$dir" > "$dir/log.blockMesh" 2>&1 || return 1
+    cp -r "$dir/0.orig" "$dir/0"
+    segregationDegradationFoam -case "$dir" > "$dir/log.solver" 2>&1 || { tail -30 "$dir/log.solver"; return 1; }
+    python3 - "$dir" <<'PY'
+import math, re, sys
+case = sys.argv[1]
+log = open(case + "/log.solver").read()
+Q = float(re.search(r"Beverloo discharge rate Q = (\S+)", log).group(1))
+Qmesh = float(re.search(r"outlet flux (\S+) m3/s on the mesh", log).group(1))
+div = float(re.search(r"max \|div\(phi\)\| V / sum\|phi\| = (\S+)", log).group(1))
+# Beverloo by hand: C sqrt(g) (D0 - k d)^2.5 (tan 30)^-0.35, d = 0.8*1 mm + 0.2*2 mm
+Qhand = 0.58 * math.sqrt(9.81) * (0.04 - 1.5 * 1.2e-3) ** 2.5 * math.tan(math.radians(30)) ** -0.35
+share = math.sin(math.radians(5)) / (2 * math.pi)   # 5 deg wedge of the outlet disc
+rows = [l.split() for l in open(case + "/postProcessing/outletComposition/0/outlet.dat") if not l.startswith("#")]
+Qout, mass, fracFine = float(rows[0][1]), float(rows[0][2]), float(rows[0][5])
+print("Beverloo Q %.6e (hand %.6e); outlet flux %.6e = %.6f of Q (wedge share %.6f);"
+      " max div %.1e; first outlet Q %.6e, mass flow %.6e (expected %.6e), fine fraction %.6f"
+      % (Q, Qhand, Qmesh, Qmesh / Q, share, div, Qout, mass, Qmesh * 0.6 * 2500, fracFine))
+ok = abs(Q / Qhand - 1) < 1e-8 and abs(Qmesh / Q / share - 1) < 1e-3 and div < 1e-8
+ok = ok and abs(Qout / Qmesh - 1) < 1e-9 and abs(mass / (Qmesh * 0.6 * 2500) - 1) < 1e-6 and abs(fracFine - 0.8) < 1e-4
+sys.exit(0 if ok else 1)
+PY
+}

@@ -389,6 +389,63 @@ TEST(segregationFlux, conservesAndBoundsOnClosedBox)
 }
 
 
+TEST(selection, noneModelsAddNothing)
+{
+    setFields(0.48, 0.12);
+    autoPtr<bulkFlowModel> flow
+    (
+        bulkFlowModel::New(dictOf("model prescribed;"), *testMixturePtr)
+    );
+    EXPECT_FALSE
+    (
+        percolationModel::New(dictOf("model none;"), *testMixturePtr, flow())
+       ->active()
+    );
+    EXPECT_FALSE
+    (
+        kineticSievingModel::New(dictOf("model none;"), *testMixturePtr, flow())
+       ->active()
+    );
+    EXPECT_FALSE
+    (
+        breakageModel::New(dictOf("model none;"), *testMixturePtr)->active()
+    );
+
+    // With every mechanism `none` the segregation flux is inactive
+    autoPtr<percolationModel> perc
+    (
+        percolationModel::New(dictOf("model none;"), *testMixturePtr, flow())
+    );
+    UPtrList<pairwiseDrift> models(1);
+    models.set(0, perc.get());
+    segregationFlux seg(*testMixturePtr, models);
+    EXPECT_FALSE(seg.active());
+    EXPECT_EQ(seg.courantNumber(1), 0);
+
+    // granularTemperature none: T stays zero
+    autoPtr<granularTemperatureModel> temp
+    (
+        granularTemperatureModel::New(dictOf("model none;"), *testMixturePtr)
+    );
+    temp->correct(flow());
+    EXPECT_EQ(gMax(mag(temp->T().primitiveField())), 0);
+}
+
+
+TEST(granularMixture, nonFiniteValueStopsWithFieldAndCell)
+{
+    setFields(0.48, 0.12);
+    testMixturePtr->n()[1][5] = std::numeric_limits<scalar>::quiet_NaN();
+    expectFoamError
+    (
+        []{ testMixturePtr->checkFinite("in the test"); },
+        {"n.coarse", "cell 5", "in the test"}
+    );
+    setFields(0.48, 0.12);
+    EXPECT_NO_THROW(testMixturePtr->checkFinite("in the test"));
+}
+
+
 // * * * * * * * * * * * * * * Selection errors * * * * * * * * * * * * * * //
 
 TEST(selection, unknownModelListsValidNames)
