@@ -31,6 +31,14 @@ public:
     const std::vector<int>& incidentPairs() const { return incidentPairs_; }
 
     double cutoff() const { return cutoff_; }
+
+    //- Reinstates a pair list from a checkpoint (incidence lists are rebuilt with the next
+    //  build(); only used to carry contact histories over).
+    void restorePairs(std::vector<int> first, std::vector<int> second)
+    {
+        first_ = std::move(first);
+        second_ = std::move(second);
+    }
     long builds() const { return builds_; }
 
 private:

@@ -216,6 +216,75 @@ void Simulation::addWall(const Wall& wall)
     refreshForces();
 }
 
+SimulationState Simulation::exportState() const
+{
+    SimulationState st;
+    st.particles = particles_;
+    st.time = time_;
+    st.stepCount = stepCount_;
+    st.shearOffset = box_.offset;
+    st.pairFirst = list_.first();
+    st.pairSecond = list_.second();
+    st.history = history_;
+    const std::size_t n = list_.size();
+    st.pairForce.resize(3*n);
+    st.pairNCrossFt.resize(3*n);
+    for (std::size_t k = 0; k < n; ++k)
+    {
+        st.pairForce[3*k] = pfx_[k]; st.pairForce[3*k + 1] = pfy_[k]; st.pairForce[3*k + 2] = pfz_[k];
+        st.pairNCrossFt[3*k] = pcx_[k]; st.pairNCrossFt[3*k + 1] = pcy_[k]; st.pairNCrossFt[3*k + 2] = pcz_[k];
+    }
+    return st;
+}
+
+void Simulation::importState(const SimulationState& st)
+{
+    const std::size_t n = st.particles.size();
+    const std::size_t nPairs = st.pairFirst.size();
+    if (n != particles_.size())
+    {
+        throw std::invalid_argument
+        (
+            "checkpoint holds " + std::to_string(n) + " particles, the simulation "
+          + std::to_string(particles_.size())
+        );
+    }
+    if (st.pairSecond.size() != nPairs || st.history.size() != nPairs
+     || st.pairForce.size() != 3*nPairs || st.pairNCrossFt.size() != 3*nPairs)
+    {
+        throw std::invalid_argument("checkpoint: inconsistent pair arrays");
+    }
+    for (std::size_t i = 0; i < n; ++i)
+    {
+        if (st.particles.species[i] < 0 || st.particles.species[i] >= int(species_.size()))
+        {
+            throw std::invalid_argument("checkpoint: species id out of range");
+        }
+    }
+    particles_ = st.particles;
+    time_ = st.time;
+    stepCount_ = st.stepCount;
+    box_.offset = st.shearOffset;
+    list_.restorePairs(st.pairFirst, st.pairSecond);
+    history_ = st.history;
+    for (auto* a : {&pfx_, &pfy_, &pfz_, &pcx_, &pcy_, &pcz_}) a->assign(nPairs, 0.0);
+    for (std::size_t k = 0; k < nPairs; ++k)
+    {
+        pfx_[k] = st.pairForce[3*k]; pfy_[k] = st.pairForce[3*k + 1]; pfz_[k] = st.pairForce[3*k + 2];
+        pcx_[k] = st.pairNCrossFt[3*k]; pcy_[k] = st.pairNCrossFt[3*k + 1]; pcz_[k] = st.pairNCrossFt[3*k + 2];
+    }
+    for (auto* a : {&svx_, &svy_, &svz_, &swx_, &swy_, &swz_, &dispX_, &dispY_, &dispZ_})
+    {
+        a->assign(n, 0.0);
+    }
+    for (auto& w : wallHistory_) w.assign(n, ContactHistory());
+    timeSinceBuild_ = 0;
+    radiusGrowthSinceBuild_ = 0;
+    // forces F^n come from the checkpoint; the list is rebuilt (histories carried over)
+    // at the next force evaluation
+    listValid_ = false;
+}
+
 void Simulation::refreshForces()
 {
     const std::size_t n = particles_.size();

@@ -94,6 +94,19 @@ struct CollisionStatistics
     double frequencyPerParticle(int s, int t, const std::vector<int>& speciesCounts) const;
 };
 
+//- Everything needed to continue a run bit for bit (walls and collision counts excluded).
+struct SimulationState
+{
+    Particles particles;
+    double time = 0;
+    long stepCount = 0;
+    double shearOffset = 0;
+    std::vector<int> pairFirst, pairSecond;
+    std::vector<ContactHistory> history;
+    // per-pair force on i and n x F_t of the last evaluation (stress measurements)
+    std::vector<double> pairForce, pairNCrossFt;   // 3 per pair
+};
+
 class Simulation
 {
 public:
@@ -119,6 +132,11 @@ public:
     );
 
     void addWall(const Wall& wall);
+
+    //- State for checkpoints; importState continues bitwise as if never interrupted
+    //  (the per-particle force sums do not depend on which non-touching pairs are listed).
+    SimulationState exportState() const;
+    void importState(const SimulationState& state);
 
     //- Forces a neighbour-list rebuild at the next force evaluation (after changing radii).
     void invalidateNeighbourList() { listValid_ = false; }
