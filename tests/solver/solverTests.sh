@@ -212,3 +212,14 @@ ok = ok and abs(Qout / Qmesh - 1) < 1e-9 and abs(mass / (Qmesh * 0.6 * 2500) - 1
 sys.exit(0 if ok else 1)
 PY
 }
+
+# Gray-Thornton chute with second-order TVD schemes for the bulk advection
+# (shared limiter) and the segregation flux: bounds to 1e-8, n.fine +
+# n.coarse = 1, meeting point within 2 % (the check's assertions)
+test_chute_tvd()
+{
+    local dir="$workRoot/chuteTVD"
+    rm -rf "$dir"; mkdir -p "$dir"
+    cp -r "$validationDir/grayThorntonChute" "$dir/"
+    "$dir/grayThorntonChute/Allrun" -n 40 -div "Gauss vanLeer01" -reconstruct vanLeer -tol 0.02
+}

@@ -36,6 +36,7 @@ Description
 #include "breakageModel.H"
 #include "segregationFlux.H"
 #include "outletComposition.H"
+#include "speciesAdvection.H"
 #include "wallFvPatch.H"
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
