@@ -1,0 +1,200 @@
+#include "fit/Laws.hpp"
+
+#include <Eigen/Dense>
+
+#include <cmath>
+#include <functional>
+#include <stdexcept>
+
+namespace sdf::fit
+{
+
+namespace
+{
+
+double perComponentTemperature(const Condition& c)
+{
+    return c.T / 3.0;
+}
+
+//- Weighted least squares of ln y on the columns that `regressors` writes
+//  for each row, over the rows with y > 0 (weights (y/sigma)^2: the inverse
+//  variance of ln y). Returns an empty vector when too few rows qualify, so
+//  the caller falls back to its default start.
+Eigen::VectorXd logRegression
+(
+    const std::vector<Observation>& data,
+    int columns,
+    const std::function<void(const Condition&, Eigen::RowVectorXd&)>& regressors,
+    const std::function<double(const Condition&)>& knownFactor
+)
+{
+    std::vector<const Observation*> usable;
+    for (const Observation& o : data)
+    {
+        const double known = knownFactor(o.condition);
+        if (o.value > 0.0 && o.sigma > 0.0 && known > 0.0 && std::isfinite(known))
+        {
+            usable.push_back(&o);
+        }
+    }
+    if (usable.size() < std::size_t(columns))
+    {
+        return Eigen::VectorXd();
+    }
+    Eigen::MatrixXd design(usable.size(), columns);
+    Eigen::VectorXd target(usable.size());
+    for (std::size_t i = 0; i < usable.size(); ++i)
+    {
+        const Observation& o = *usable[i];
+        const double weight = o.value / o.sigma;   // 1 / (standard error of ln y)
+        Eigen::RowVectorXd row(columns);
+        regressors(o.condition, row);
+        design.row(i) = weight * row;
+        target(i) = weight * std::log(o.value / knownFactor(o.condition));
+    }
+    // Rank-revealing: degenerate data (e.g. one x only) still give a start;
+    // the fit itself then reports the parameters as not identifiable.
+    Eigen::VectorXd solution = design.colPivHouseholderQr().solve(target);
+    return solution.allFinite() ? solution : Eigen::VectorXd();
+}
+
+} // namespace
+
+double carnahanStarlingG0(double phi)
+{
+    const double oneMinus = 1.0 - phi;
+    return (1.0 - 0.5 * phi) / (oneMinus * oneMinus * oneMinus);
+}
+
+// ---------------------------------------------------------------- powerLaw
+
+double SeedPowerLaw::evaluate(const Condition& c, const Eigen::VectorXd& p) const
+{
+    return p(0) * std::pow(1.0 + c.x, p(1)) * std::pow(c.T, p(2)) * std::pow(c.phi, p(3));
+}
+
+Eigen::VectorXd SeedPowerLaw::gradient(const Condition& c, const Eigen::VectorXd& p) const
+{
+    // Shape without A, so dD/dA is right at A = 0 too.
+    const double shape = std::pow(1.0 + c.x, p(1)) * std::pow(c.T, p(2)) * std::pow(c.phi, p(3));
+    const double value = p(0) * shape;
+    Eigen::VectorXd g(4);
+    g << shape, value * std::log1p(c.x), value * std::log(c.T), value * std::log(c.phi);
+    return g;
+}
+
+Eigen::VectorXd SeedPowerLaw::initialParameters(const std::vector<Observation>& data) const
+{
+    const Eigen::VectorXd solution = logRegression
+    (
+        data, 4,
+        [](const Condition& c, Eigen::RowVectorXd& row)
+        {
+            row << 1.0, std::log1p(c.x), std::log(c.T), std::log(c.phi);
+        },
+        [](const Condition&) { return 1.0; }
+    );
+    Eigen::VectorXd start(4);
+    if (solution.size() == 4)
+    {
+        start << std::exp(solution(0)), solution(1), solution(2), solution(3);
+    }
+    else
+    {
+        start << 6.0, 1.0, 1.0, -1.5;   // the paper's values
+    }
+    return start;
+}
+
+// ----------------------------------------------------- kineticTheoryGroups
+
+namespace
+{
+double kineticShape(const Condition& c)
+{
+    return c.d * std::sqrt(perComponentTemperature(c)) / (c.phi * carnahanStarlingG0(c.phi));
+}
+} // namespace
+
+double KineticTheoryGroupsLaw::evaluate(const Condition& c, const Eigen::VectorXd& p) const
+{
+    return p(0) * kineticShape(c) * (1.0 + p(1) * c.x);
+}
+
+Eigen::VectorXd KineticTheoryGroupsLaw::gradient
+(
+    const Condition& c,
+    const Eigen::VectorXd& p
+) const
+{
+    const double shape = kineticShape(c);
+    Eigen::VectorXd g(2);
+    g << shape * (1.0 + p(1) * c.x), p(0) * shape * c.x;
+    return g;
+}
+
+Eigen::VectorXd KineticTheoryGroupsLaw::initialParameters
+(
+    const std::vector<Observation>& data
+) const
+{
+    const Eigen::VectorXd solution = logRegression
+    (
+        data, 1,
+        [](const Condition&, Eigen::RowVectorXd& row) { row << 1.0; },
+        kineticShape
+    );
+    Eigen::VectorXd start(2);
+    start << (solution.size() == 1 ? std::exp(solution(0)) : std::sqrt(M_PI) / 16.0), 0.0;
+    return start;
+}
+
+// --------------------------------------------------------- sievingPowerLaw
+
+double SievingPowerLaw::evaluate(const Condition& c, const Eigen::VectorXd& p) const
+{
+    return p(0) * std::pow(c.d, diameterPower) * std::sqrt(perComponentTemperature(c))
+         * std::pow(c.phi, p(1)) * (1.0 + p(2) * c.x);
+}
+
+Eigen::VectorXd SievingPowerLaw::gradient(const Condition& c, const Eigen::VectorXd& p) const
+{
+    const double scale = std::pow(c.d, diameterPower) * std::sqrt(perComponentTemperature(c))
+                       * std::pow(c.phi, p(1));
+    const double composition = 1.0 + p(2) * c.x;
+    Eigen::VectorXd g(3);
+    g << scale * composition,
+         p(0) * scale * composition * std::log(c.phi),
+         p(0) * scale * c.x;
+    return g;
+}
+
+Eigen::VectorXd SievingPowerLaw::initialParameters(const std::vector<Observation>& data) const
+{
+    const int k = diameterPower;
+    const Eigen::VectorXd solution = logRegression
+    (
+        data, 2,
+        [](const Condition& c, Eigen::RowVectorXd& row)
+        {
+            row << 1.0, std::log(c.phi);
+        },
+        [k](const Condition& c)
+        {
+            return std::pow(c.d, k) * std::sqrt(perComponentTemperature(c));
+        }
+    );
+    Eigen::VectorXd start(3);
+    if (solution.size() == 2)
+    {
+        start << std::exp(solution(0)), solution(1), 0.0;
+    }
+    else
+    {
+        start << 1.0, 0.0, 0.0;
+    }
+    return start;
+}
+
+} // namespace sdf::fit

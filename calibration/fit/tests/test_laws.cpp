@@ -1,0 +1,94 @@
+// The laws themselves: the seed's numbers, the Chapman-Enskog limit, and
+// analytic gradients against central finite differences.
+#include "fit/ConstitutiveLaw.hpp"
+#include "fit/Laws.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+using namespace sdf::fit;
+
+TEST(Laws, SeedPowerLawWithThePapersValuesIsEq15)
+{
+    Eigen::VectorXd p(4);
+    p << 6.0, 1.0, 1.0, -1.5;
+    const Condition c{0.3, 0.2, 0.05, 1e-3, std::nullopt};
+    EXPECT_NEAR(SeedPowerLaw{}.evaluate(c, p), 6.0 * 1.2 * 0.05 * std::pow(0.3, -1.5), 1e-14);
+}
+
+TEST(Laws, KineticTheoryGroupsReducesToChapmanEnskog)
+{
+    // Validation item 11: D_E = d sqrt(pi T1)/(16 phi g0), T1 = T/3.
+    Eigen::VectorXd p(2);
+    p << std::sqrt(M_PI) / 16.0, 0.0;
+    for (const double phi : {0.05, 0.3, 0.55})
+    {
+        const Condition c{phi, 0.4, 0.03, 2e-3, std::nullopt};
+        const double g0 = (1.0 - phi / 2.0) / std::pow(1.0 - phi, 3);
+        const double enskog = 2e-3 * std::sqrt(M_PI * 0.03 / 3.0) / (16.0 * phi * g0);
+        EXPECT_NEAR(KineticTheoryGroupsLaw{}.evaluate(c, p) / enskog, 1.0, 1e-13);
+    }
+    EXPECT_NEAR(carnahanStarlingG0(0.0), 1.0, 1e-15);
+    EXPECT_NEAR(carnahanStarlingG0(0.5), 0.75 / 0.125, 1e-12);
+}
+
+TEST(Laws, SievingPowerLawUnitsFollowTheDiameterPower)
+{
+    Eigen::VectorXd p(3);
+    p << 0.7, -1.2, 0.5;
+    const Condition c{0.4, 0.2, 0.3, 3e-3, std::nullopt};
+    const double common = 0.7 * std::sqrt(0.1) * std::pow(0.4, -1.2) * 1.1;
+    EXPECT_NEAR(SievingPowerLaw{}.evaluate(c, p), common * 3e-3, 1e-15);
+    EXPECT_NEAR(SievingPowerLaw{2}.evaluate(c, p), common * 9e-6, 1e-18);
+    ASSERT_EQ(SievingPowerLaw{2}.fixedEntries().size(), 1u);
+    EXPECT_EQ(SievingPowerLaw{2}.fixedEntries()[0].first, "diameterPower");
+    EXPECT_EQ(SievingPowerLaw{2}.fixedEntries()[0].second, 2.0);
+}
+
+namespace
+{
+void expectGradientMatchesFiniteDifferences(const ConstitutiveLaw& law, Eigen::VectorXd p)
+{
+    for (const Condition& c :
+         {Condition{0.15, 0.2, 2e-3, 1e-3, std::nullopt},
+          Condition{0.45, 0.4, 8e-2, 4e-3, std::nullopt}})
+    {
+        const Eigen::VectorXd analytic = law.gradient(c, p);
+        ASSERT_EQ(analytic.size(), p.size());
+        for (Eigen::Index j = 0; j < p.size(); ++j)
+        {
+            const double h = 1e-6 * std::max(1.0, std::abs(p(j)));
+            Eigen::VectorXd up = p, down = p;
+            up(j) += h;
+            down(j) -= h;
+            const double numeric = (law.evaluate(c, up) - law.evaluate(c, down)) / (2.0 * h);
+            EXPECT_NEAR(analytic(j), numeric, 1e-7 * std::abs(numeric) + 1e-300)
+                << law.name() << " parameter " << law.parameterNames()[j];
+        }
+    }
+}
+} // namespace
+
+TEST(Laws, AnalyticGradientsMatchFiniteDifferences)
+{
+    Eigen::VectorXd seed(4), kinetic(2), sieving(3);
+    seed << 6.0, 1.0, 1.0, -1.5;
+    kinetic << 0.11, 0.6;
+    sieving << 0.8, -0.7, 0.3;
+    expectGradientMatchesFiniteDifferences(SeedPowerLaw{}, seed);
+    expectGradientMatchesFiniteDifferences(KineticTheoryGroupsLaw{}, kinetic);
+    expectGradientMatchesFiniteDifferences(SievingPowerLaw{}, sieving);
+    expectGradientMatchesFiniteDifferences(SievingPowerLaw{2}, sieving);
+}
+
+TEST(Laws, TypeErasedLawKeepsNamesAndCopies)
+{
+    const ConstitutiveLaw law = SeedPowerLaw{};
+    const ConstitutiveLaw copy = law;
+    EXPECT_EQ(copy.name(), "powerLaw");
+    EXPECT_EQ(copy.parameterCount(), 4u);
+    EXPECT_EQ(copy.parameterNames()[3], "b");
+    EXPECT_EQ(ConstitutiveLaw(KineticTheoryGroupsLaw{}).name(), "kineticTheoryGroups");
+    EXPECT_EQ(ConstitutiveLaw(SievingPowerLaw{}).name(), "sievingPowerLaw");
+}
