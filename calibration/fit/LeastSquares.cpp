@@ -423,7 +423,10 @@ FitResult fitLaw
             const Eigen::MatrixXd V = svd.matrixV();
             const Eigen::MatrixXd equilibratedCovariance = V * inverseSquares.asDiagonal() * V.transpose();
             const Eigen::VectorXd inverseNorm = columnNorm.cwiseInverse();
-            result.covariance = inverseNorm.asDiagonal() * equilibratedCovariance * inverseNorm.asDiagonal();
+            const Eigen::MatrixXd covariance =
+                inverseNorm.asDiagonal() * equilibratedCovariance * inverseNorm.asDiagonal();
+            // Symmetric to the last bit (rounding leaves ~1e-20 asymmetries).
+            result.covariance = 0.5 * (covariance + covariance.transpose());
             // Remaining Gauss-Newton step, in units of the (unscaled) errors.
             Eigen::VectorXd r(n);
             for (std::size_t i = 0; i < n; ++i)

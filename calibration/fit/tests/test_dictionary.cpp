@@ -122,6 +122,27 @@ TEST(Dictionary, WritesEveryEntryAndTheNumbersReadBack)
         EXPECT_NEAR(number(D, p.name), p.value, 1e-9 * std::abs(p.value)) << p.name;
         EXPECT_NEAR(number(errorsD, p.name), p.standardError, 1e-9 * p.standardError) << p.name;
     }
+    // Covariance: a list of rows in parameter order, symmetric, errors^2 on the diagonal.
+    {
+        const std::string rows = entry(D, "covariance");
+        const std::regex numberPattern("[-+0-9.eE]+");
+        std::vector<double> values;
+        for (auto it = std::sregex_iterator(rows.begin(), rows.end(), numberPattern);
+             it != std::sregex_iterator(); ++it)
+        {
+            values.push_back(std::stod(it->str()));
+        }
+        ASSERT_EQ(values.size(), 16u) << rows;
+        for (std::size_t i = 0; i < 4; ++i)
+        {
+            const double se = fitD.parameters[i].standardError;
+            EXPECT_NEAR(values[5 * i], se * se, 1e-9 * se * se);
+            for (std::size_t j = 0; j < 4; ++j)
+            {
+                EXPECT_EQ(values[4 * i + j], values[4 * j + i]);
+            }
+        }
+    }
     EXPECT_NEAR(number(D, "R2"), fitD.rSquared, 1e-9);
     EXPECT_NEAR(number(D, "AIC"), fitD.aic, 1e-8 * std::abs(fitD.aic));
     EXPECT_EQ(entry(D, "points"), "120");

@@ -143,3 +143,35 @@ TEST(ModelSelection, RefusesFitsOfDifferentTables)
     );
     EXPECT_THROW(selectModel({}), std::invalid_argument);
 }
+
+TEST(ModelSelection, OneDiameterOnlyThePhiShapeTellsTheLawsApart)
+{
+    // With a single diameter and two coarse fractions the power law matches
+    // kinetic theory's d sqrt(T) and (1 + alpha x) exactly (m = 1/2, a fitted
+    // through two points); only phi^b versus 1/(phi g0(phi)) differs. The
+    // generating law must still win, by less than above.
+    Eigen::VectorXd truth(2);
+    truth << 0.15, 0.8;
+    std::vector<Condition> conditions;
+    for (const Condition& c : seedLikeEnvelope())
+    {
+        if (c.d == 2e-3)
+        {
+            conditions.push_back(c);
+        }
+    }
+    std::mt19937_64 engine(26);
+    const auto data = synthetic(KineticTheoryGroupsLaw{}, truth, conditions, 0.03, engine);
+    const ModelSelection s = selectBetweenTheDiffusivityLaws(data, InformationCriterion::AIC);
+    EXPECT_EQ(s.best().law, "kineticTheoryGroups");
+    EXPECT_GT(s.ranking[1].delta, 10.0);
+    // The power law's phi exponent is then an effective slope of 1/(phi g0)
+    // over 0.1..0.5: steeper than -1 (g0 grows with phi).
+    const FitResult power = fitLaw(SeedPowerLaw{}, data);
+    ASSERT_TRUE(power.converged()) << power.message;
+    EXPECT_LT(power.parameter("b").value, -1.0);
+    EXPECT_NEAR(power.parameter("m").value, 0.5, 5.0 * power.parameter("m").standardError);
+    std::cout << "  power law on kinetic data: b = " << power.parameter("b").value << " +- "
+              << power.parameter("b").standardError << ", m = " << power.parameter("m").value
+              << "\n";
+}
