@@ -11,6 +11,7 @@
 #include <cfloat>
 #include <cmath>
 #include <memory>
+#include <optional>
 #include <sstream>
 
 namespace sdf::fit
@@ -29,6 +30,9 @@ struct Problem
     const ConstitutiveLaw& law;
     const std::vector<Observation>& data;
     FitSpace space;
+    //- Set by the Jacobian callback when the law's gradient is not finite
+    //  (the callback then stops GSL with an error status).
+    std::optional<std::size_t> nonFiniteGradientRow;
 };
 
 //- Normalised residual r_i; false when the law is unusable at this row.
@@ -110,14 +114,19 @@ int gslJacobian(const gsl_vector* x, void* params, gsl_matrix* J)
 {
     try
     {
-        const Problem& problem = *static_cast<const Problem*>(params);
+        Problem& problem = *static_cast<Problem*>(params);
         const Eigen::VectorXd p = toEigen(x);
         for (std::size_t i = 0; i < problem.data.size(); ++i)
         {
             const Eigen::RowVectorXd row = jacobianRow(problem, i, p);
+            if (!row.allFinite())
+            {
+                problem.nonFiniteGradientRow = i;
+                return GSL_EBADFUNC;
+            }
             for (Eigen::Index j = 0; j < row.size(); ++j)
             {
-                gsl_matrix_set(J, i, j, std::isfinite(row(j)) ? row(j) : 0.0);
+                gsl_matrix_set(J, i, j, row(j));
             }
         }
         return GSL_SUCCESS;
@@ -253,17 +262,41 @@ FitResult fitLaw
         result.message = context + " failed (" + toString(status) + "): " + reason;
     };
 
-    const Problem problem{law, data, options.space};
+    Problem problem{law, data, options.space, std::nullopt};
+    // The start is checked here, not left to GSL: a law that is unusable, has
+    // a non-finite gradient, or does not depend on a parameter at the start
+    // would otherwise reach GSL's own checks, whose default handler aborts.
+    Eigen::MatrixXd startJacobian(data.size(), k);
     for (std::size_t i = 0; i < data.size(); ++i)
     {
         double r = 0.0;
+        std::ostringstream m;
         if (!residual(problem, i, start, r))
         {
-            std::ostringstream m;
             m << "the law at the initial parameters is not "
               << (options.space == FitSpace::logarithmic ? "positive and finite" : "finite")
               << " at row " << i;
             fail(FitStatus::invalidLaw, m.str());
+            return result;
+        }
+        startJacobian.row(i) = jacobianRow(problem, i, start);
+        if (!startJacobian.row(i).allFinite())
+        {
+            m << "the law's gradient is not finite at row " << i << " at the initial parameters";
+            fail(FitStatus::nonFiniteResult, m.str());
+            return result;
+        }
+    }
+    for (std::size_t j = 0; j < k; ++j)
+    {
+        if (startJacobian.col(j).isZero(0.0))
+        {
+            fail
+            (
+                FitStatus::singularCovariance,
+                "parameters not identifiable from these data (unidentified direction: "
+              + names[j] + " (the data do not depend on it))"
+            );
             return result;
         }
     }
@@ -277,7 +310,7 @@ FitResult fitLaw
     fdf.fvv = nullptr;
     fdf.n = data.size();
     fdf.p = k;
-    fdf.params = const_cast<Problem*>(&problem);
+    fdf.params = &problem;
 
     std::unique_ptr<gsl_multifit_nlinear_workspace, WorkspaceDeleter> workspace
     (
@@ -455,7 +488,13 @@ FitResult fitLaw
     constexpr double negligibleStep = 1e-6;
     const bool atMinimum = stalled && remainingStepInErrors <= negligibleStep;
     std::ostringstream how;
-    if (solverStatus != GSL_SUCCESS)
+    if (problem.nonFiniteGradientRow)
+    {
+        how << "the law's gradient is not finite at row " << *problem.nonFiniteGradientRow
+            << " (after " << result.iterations << " iterations)";
+        fail(FitStatus::nonFiniteResult, how.str());
+    }
+    else if (solverStatus != GSL_SUCCESS)
     {
         fail(FitStatus::solverError, std::string("GSL: ") + gsl_strerror(solverStatus));
     }

@@ -125,3 +125,57 @@ TEST(Failure, FailedFitIsNotWrittenToTheDictionary)
     );
     EXPECT_TRUE(os.str().empty()) << "a partial dictionary was written";
 }
+
+namespace
+{
+//- A user law (any type with the ConstitutiveLaw interface) whose gradient
+//  is broken: NaN wherever it is asked.
+struct BrokenGradientLaw
+{
+    std::string name() const { return "brokenGradient"; }
+    std::string formula() const { return "A*T"; }
+    std::vector<std::string> parameterNames() const { return {"A"}; }
+    double evaluate(const Condition& c, const Eigen::VectorXd& p) const { return p(0) * c.T; }
+    Eigen::VectorXd gradient(const Condition&, const Eigen::VectorXd&) const
+    {
+        return Eigen::VectorXd::Constant(1, NAN);
+    }
+    Eigen::VectorXd initialParameters(const std::vector<Observation>&) const
+    {
+        return Eigen::VectorXd::Constant(1, 2.0);
+    }
+    std::vector<std::pair<std::string, double>> fixedEntries() const { return {}; }
+};
+} // namespace
+
+TEST(Failure, NonFiniteJacobianIsReported)
+{
+    const FitResult fit = fitLaw(BrokenGradientLaw{}, seedData(36));
+    EXPECT_FALSE(fit.converged());
+    EXPECT_EQ(fit.status, FitStatus::nonFiniteResult);
+    expectMessageNames(fit.message, "brokenGradient");
+    expectMessageNames(fit.message, "not finite");
+}
+
+namespace
+{
+//- Gradient fine at the start, NaN once the solver has moved: the failure
+//  must surface from inside the GSL iterations as a report, not an abort.
+struct GradientBreaksAwayFromStartLaw : BrokenGradientLaw
+{
+    std::string name() const { return "gradientBreaksAwayFromStart"; }
+    Eigen::VectorXd gradient(const Condition& c, const Eigen::VectorXd& p) const
+    {
+        return Eigen::VectorXd::Constant(1, std::abs(p(0) - 2.0) < 1e-12 ? c.T : NAN);
+    }
+};
+} // namespace
+
+TEST(Failure, NonFiniteJacobianDuringTheIterationsIsReported)
+{
+    const FitResult fit = fitLaw(GradientBreaksAwayFromStartLaw{}, seedData(37));
+    EXPECT_EQ(fit.status, FitStatus::nonFiniteResult);
+    expectMessageNames(fit.message, "gradientBreaksAwayFromStart");
+    expectMessageNames(fit.message, "gradient is not finite");
+    expectMessageNames(fit.message, "iterations");
+}
