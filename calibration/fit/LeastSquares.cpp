@@ -331,7 +331,12 @@ FitResult fitLaw
     int info = 0;
     bool testsPassed = false;
     bool stalled = false;
-    for (std::size_t iteration = 0; solverStatus == GSL_SUCCESS && iteration < options.maxIterations; ++iteration)
+    for
+    (
+        std::size_t iteration = 0;
+        solverStatus == GSL_SUCCESS && iteration < options.maxIterations;
+        ++iteration
+    )
     {
         const int step = gsl_multifit_nlinear_iterate(workspace.get());
         stalled = step == GSL_ENOPROG;
@@ -442,7 +447,10 @@ FitResult fitLaw
     if (J.allFinite())
     {
         const Eigen::MatrixXd equilibrated = J * columnNorm.cwiseInverse().asDiagonal();
-        Eigen::JacobiSVD<Eigen::MatrixXd> svd(equilibrated, Eigen::ComputeThinU | Eigen::ComputeThinV);
+        Eigen::JacobiSVD<Eigen::MatrixXd> svd
+        (
+            equilibrated, Eigen::ComputeThinU | Eigen::ComputeThinV
+        );
         const Eigen::VectorXd singularValues = svd.singularValues();
         if (!singular
             && singularValues(k - 1) < options.rankTolerance * singularValues(0))
@@ -454,7 +462,8 @@ FitResult fitLaw
         {
             const Eigen::VectorXd inverseSquares = singularValues.array().square().inverse();
             const Eigen::MatrixXd V = svd.matrixV();
-            const Eigen::MatrixXd equilibratedCovariance = V * inverseSquares.asDiagonal() * V.transpose();
+            const Eigen::MatrixXd equilibratedCovariance =
+                V * inverseSquares.asDiagonal() * V.transpose();
             const Eigen::VectorXd inverseNorm = columnNorm.cwiseInverse();
             const Eigen::MatrixXd covariance =
                 inverseNorm.asDiagonal() * equilibratedCovariance * inverseNorm.asDiagonal();
@@ -466,8 +475,9 @@ FitResult fitLaw
             {
                 r(i) = result.normalisedResiduals[i];
             }
-            const Eigen::VectorXd step = -(inverseNorm.asDiagonal()
-                * (V * (singularValues.cwiseInverse().asDiagonal() * (svd.matrixU().transpose() * r))));
+            const Eigen::VectorXd equilibratedStep =
+                V * (singularValues.cwiseInverse().asDiagonal() * (svd.matrixU().transpose() * r));
+            const Eigen::VectorXd step = -(inverseNorm.asDiagonal() * equilibratedStep);
             remainingStepInErrors =
                 (step.array().abs() / result.covariance.diagonal().array().sqrt()).maxCoeff();
             if (options.sigmaMeaning == SigmaMeaning::relative)
