@@ -86,13 +86,14 @@ def ours(name):
     T = float(re.search(r"T = ([0-9.eE+-]+) \+- ([0-9.eE+-]+)", text).group(1))
     Terr = float(re.search(r"T = ([0-9.eE+-]+) \+- ([0-9.eE+-]+)", text).group(2))
     rate = float(re.search(r"throughput ([0-9.eE+-]+) particle-steps/s", text).group(1))
-    return T, Terr, rate
-T1, T1err, rate1 = ours("ours-1thread.log")
-T2, T2err, rate2 = ours("ours-2threads.log")
+    cpu = float(re.search(r"CPU use ([0-9.eE+-]+) %", text).group(1))
+    return T, Terr, rate, cpu
+T1, T1err, rate1, cpu1 = ours("ours-1thread.log")
+T2, T2err, rate2, cpu2 = ours("ours-2threads.log")
 log = open(f"{out}/lammps.log").read()
 loops = re.findall(r"Loop time of ([0-9.eE+-]+) on (\d+) procs for (\d+) steps with (\d+) atoms", log)
 loopTime, procs, steps, atoms = loops[-1]
-cpu = re.findall(r"([0-9.]+)% CPU use", log)[-1]
+cpu = float(re.findall(r"([0-9.]+)% CPU use", log)[-1])
 lammpsRate = int(steps)*int(atoms)/float(loopTime)
 # T from the thermo lines of the production run (second run block)
 blocks = log.split("Loop time of")
@@ -108,8 +109,9 @@ report = f"""N = {N}, phi = 0.5, fines 1 mm / coarse 2 mm (equal solids volume),
 kn = 2000 N/m, dt = 1e-6 s, gammaDot = 100 1/s, {nRun} production steps
 T (m2/s2, sum of 3 components):  ours {T1:.5g} +- {T1err:.2g}   LAMMPS {mean:.5g} +- {err:.2g}
 T / (gammaDot d_mean)^2:          ours {T1/gdd**2:.4g}            LAMMPS {mean/gdd**2:.4g}
-throughput (particle-steps/s, 1 core, wall clock): ours {rate1:.4g}   LAMMPS {lammpsRate:.4g} ({cpu} % CPU use)   ratio {rate1/lammpsRate:.3g}
-ours on 2 threads: {rate2:.4g} particle-steps/s (speed-up {rate2/rate1:.3g}; shared 2-core machine)
+throughput (particle-steps/s, 1 core, wall clock): ours {rate1:.4g} ({cpu1:.0f} % CPU use)   LAMMPS {lammpsRate:.4g} ({cpu:.0f} % CPU use)   ratio {rate1/lammpsRate:.3g}
+throughput per CPU second (load-corrected):       ours {rate1/(cpu1/100):.4g}   LAMMPS {lammpsRate/(cpu/100):.4g}   ratio {rate1/(cpu1/100)/(lammpsRate/(cpu/100)):.3g}
+ours on 2 threads: {rate2:.4g} particle-steps/s wall clock ({cpu2:.0f} % CPU use; speed-up {rate2/rate1:.3g} on the shared 2-core machine)
 """
 print(report)
 open(f"{out}/report.txt", "w").write(report)

@@ -172,8 +172,14 @@ inline void contactVelocity(const double* dv, const double* wi, const double* wj
 }
 } // namespace detail
 
-//- Evaluates one contact; updates the history. Inline: this is the hot loop.
-inline ContactResult evaluateContact
+#if defined(__GNUC__)
+#define SDF_DEM_ALWAYS_INLINE inline __attribute__((always_inline))
+#else
+#define SDF_DEM_ALWAYS_INLINE inline
+#endif
+
+//- Evaluates one contact; updates the history. Always inlined: this is the hot loop.
+SDF_DEM_ALWAYS_INLINE ContactResult evaluateContact
 (
     ContactModel model,
     const PairCoefficients& c,

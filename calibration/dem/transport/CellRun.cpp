@@ -6,6 +6,7 @@
 #include "correlation/Statistics.hpp"
 
 #include <chrono>
+#include <ctime>
 #include <fstream>
 #include <cmath>
 #include <cstdio>
@@ -180,9 +181,11 @@ CellRunResult runCell(const CellRunSettings& settings)
     {
         std::vector<double> ts;
         const auto t0 = clock::now();
+        const std::clock_t c0 = std::clock();
         sim.run(totalSteps, [&](const Simulation& x) { ts.push_back(x.temperature()); },
                 settings.sampleEvery, settings.progressEvery, settings.label);
         result.wallSeconds = std::chrono::duration<double>(clock::now() - t0).count();
+        result.cpuSeconds = double(std::clock() - c0)/CLOCKS_PER_SEC;
         result.steps = totalSteps;
         result.particleStepsPerSecond = double(totalSteps)*sim.particles().size()/result.wallSeconds;
         const correlation::Estimate T = correlation::blockAverage(ts, settings.blocks);
@@ -203,6 +206,7 @@ CellRunResult runCell(const CellRunSettings& settings)
         return result;
     }
     const auto start = clock::now();
+    const std::clock_t cpuStart = std::clock();
     auto observe = [&](const Simulation& x)
     {
         const Particles& p = x.particles();
@@ -249,6 +253,7 @@ CellRunResult runCell(const CellRunSettings& settings)
     };
     sim.run(totalSteps, observe, settings.sampleEvery, settings.progressEvery, settings.label);
     result.wallSeconds = std::chrono::duration<double>(clock::now() - start).count();
+    result.cpuSeconds = double(std::clock() - cpuStart)/CLOCKS_PER_SEC;
     result.steps = totalSteps;
     result.particleStepsPerSecond = double(totalSteps)*sim.particles().size()/result.wallSeconds;
     for (double& m : result.meanStress) m /= std::max(1L, sample);
@@ -375,7 +380,8 @@ std::string summary(const CellRunResult& r)
     if (r.settings.throughputOnly)
     {
         out << "  throughput " << r.particleStepsPerSecond << " particle-steps/s ("
-            << r.steps << " steps, " << r.wallSeconds << " s)\n";
+            << r.steps << " steps, " << r.wallSeconds << " s, CPU use "
+            << 100*r.cpuSeconds/r.wallSeconds << " %)\n";
         return out.str();
     }
     for (const SpeciesTransport& st : r.species)
@@ -408,7 +414,8 @@ std::string summary(const CellRunResult& r)
         }
     }
     out << "  throughput " << r.particleStepsPerSecond << " particle-steps/s ("
-        << r.steps << " steps, " << r.wallSeconds << " s)\n";
+        << r.steps << " steps, " << r.wallSeconds << " s, CPU use "
+        << 100*r.cpuSeconds/r.wallSeconds << " %)\n";
     return out.str();
 }
 

@@ -91,7 +91,8 @@ struct CellRunResult
     std::vector<int> speciesCounts;
     long steps = 0;
     double wallSeconds = 0;
-    double particleStepsPerSecond = 0;
+    double cpuSeconds = 0;                 // process CPU time of the sampling (all threads)
+    double particleStepsPerSecond = 0;     // per wall-clock second
 };
 
 CellRunResult runCell(const CellRunSettings& settings);

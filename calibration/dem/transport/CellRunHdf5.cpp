@@ -72,6 +72,7 @@ void writeCellRun(const CellRunResult& r, const std::string& path)
     run.setAttribute("boxLength", r.boxLength);
     run.setAttribute("steps", std::int64_t(r.steps));
     run.setAttribute("wallSeconds", r.wallSeconds);
+    run.setAttribute("cpuSeconds", r.cpuSeconds);
     run.setAttribute("particleStepsPerSecond", r.particleStepsPerSecond);
     run.setAttribute("equilibrated", std::int64_t(r.equilibrated ? 1 : 0));
     run.setAttribute("equilibrationTime", r.equilibrationTime);
