@@ -1,0 +1,274 @@
+/*---------------------------------------------------------------------------*\
+  =========                 |
+  \\      /  F ield         | segregationDegradationFoam
+   \\    /   O peration     |
+    \\  /    A nd           |
+     \\/     M anipulation  |
+-------------------------------------------------------------------------------
+Application
+    periodicDEM
+
+Group
+    grpPreProcessingUtilities
+
+Description
+    Front door of the embedded DEM engine (calibration/): runs one periodic
+    DEM cell in a case directory, prints a summary and writes
+    postProcessing/periodicDEM/<name>.h5 (layout: docs/hdf5-layout.md).
+
+    Species (d, rho) come from constant/granularProperties; the cell from
+    system/periodicDEMDict:
+    \verbatim
+    name            dilute;         // output postProcessing/periodicDEM/<name>.h5
+    composition     { fine 0.8; coarse 0.2; }   // share of the solids volume
+    particles       1000;
+    solidsFraction  0.3;
+    mode            thermostatted;  // nve | thermostatted | leesEdwards
+    temperature     0.03;           // target T, sum of 3 components [m2/s2]
+    shearRate       10;             // [1/s], leesEdwards
+    contact
+    {
+        model       linearSpringDashpot;    // linearSpringDashpot | hertzMindlin
+        restitution 0.9;
+        friction    0.5;
+        normalStiffness 2e5;        // [N/m] linear
+        youngsModulus   1e7;        // [Pa] Hertz
+        poissonRatio    0.3;
+    }
+    timeStep            0;          // 0: half the recommended maximum
+    equilibrationTime   0.02;       // [s]
+    samplingTime        0.5;        // [s]
+    sampleEvery         10;         // [steps]
+    blocks              8;          // for the statistical errors
+    seed                1;
+    threads             0;          // OpenMP threads (0: default)
+    progressEvery       10000;      // [steps]
+    \endverbatim
+    Bad input (an unknown entry, a value the engine refuses) stops with a
+    FatalIOError naming the entry; no output file is left half-written (the
+    engine writes <name>.h5.tmp and renames it).
+
+\*---------------------------------------------------------------------------*/
+
+#include "argList.H"
+#include "Time.H"
+#include "IOdictionary.H"
+#include "OSspecific.H"
+
+#include "CellRun.hpp"
+
+#include <stdexcept>
+
+using namespace Foam;
+
+namespace
+{
+
+const wordList validEntries
+({
+    "name", "composition", "particles", "solidsFraction", "mode",
+    "temperature", "shearRate", "contact", "timeStep", "equilibrationTime",
+    "maxEquilibrationTime", "samplingTime", "sampleEvery", "blocks", "seed",
+    "threads", "progressEvery", "thermostatTime", "skin", "maxOverlapFraction"
+});
+
+const wordList validContactEntries
+({
+    "model", "restitution", "friction", "normalStiffness",
+    "tangentialStiffnessRatio", "tangentialDampingRatio", "youngsModulus",
+    "poissonRatio"
+});
+
+
+void checkEntries
+(
+    const dictionary& dict,
+    const wordList& valid
+)
+{
+    for (const word& key : dict.toc())
+    {
+        if (!valid.found(key))
+        {
+            FatalIOErrorInFunction(dict)
+                << "Unknown entry '" << key << "' in " << dict.name() << nl
+                << "    valid entries: " << valid << nl
+                << exit(FatalIOError);
+        }
+    }
+}
+
+
+sdf::dem::CellRunSettings readSettings
+(
+    const dictionary& properties,
+    const dictionary& dict
+)
+{
+    checkEntries(dict, validEntries);
+
+    sdf::dem::CellRunSettings s;
+
+    // Species and composition
+    const dictionary& speciesDict = properties.subDict("species");
+    const dictionary& composition = dict.subDict("composition");
+    for (const word& name : composition.toc())
+    {
+        if (!speciesDict.isDict(name))
+        {
+            FatalIOErrorInFunction(composition)
+                << "Species '" << name << "' of 'composition' is not declared"
+                << " in constant/granularProperties; declared: "
+                << speciesDict.toc() << nl << exit(FatalIOError);
+        }
+        const dictionary& sd = speciesDict.subDict(name);
+        s.species.push_back
+        ({
+            name,
+            sd.get<scalar>("d"),
+            sd.get<scalar>("rho")
+        });
+        s.volumeFractions.push_back(composition.get<scalar>(name));
+    }
+    if (s.species.empty())
+    {
+        FatalIOErrorInFunction(composition)
+            << "'composition' names no species" << nl << exit(FatalIOError);
+    }
+
+    s.particles = dict.getOrDefault<label>("particles", 1000);
+    s.solidsFraction = dict.getOrDefault<scalar>("solidsFraction", 0.3);
+
+    sdf::dem::SimulationSettings& sim = s.simulation;
+    sim.mode = sdf::dem::cellModeFromName
+    (
+        dict.getOrDefault<word>("mode", "thermostatted")
+    );
+    sim.targetTemperature = dict.getOrDefault<scalar>("temperature", 0);
+    sim.shearRate = dict.getOrDefault<scalar>("shearRate", 0);
+    sim.thermostatTime = dict.getOrDefault<scalar>("thermostatTime", 0);
+    sim.maxOverlapFraction =
+        dict.getOrDefault<scalar>("maxOverlapFraction", 0.1);
+    sim.timeStep = dict.getOrDefault<scalar>("timeStep", 0);
+    sim.threads = dict.getOrDefault<label>("threads", 0);
+    sim.skin = dict.getOrDefault<scalar>("skin", -1);
+
+    const dictionary& contact = dict.subOrEmptyDict("contact");
+    checkEntries(contact, validContactEntries);
+    sdf::dem::ContactSettings& c = sim.contact;
+    c.model = sdf::dem::contactModelFromName
+    (
+        contact.getOrDefault<word>("model", "linearSpringDashpot")
+    );
+    c.restitution = contact.getOrDefault<scalar>("restitution", c.restitution);
+    c.friction = contact.getOrDefault<scalar>("friction", c.friction);
+    c.normalStiffness =
+        contact.getOrDefault<scalar>("normalStiffness", c.normalStiffness);
+    c.tangentialStiffnessRatio = contact.getOrDefault<scalar>
+    (
+        "tangentialStiffnessRatio", c.tangentialStiffnessRatio
+    );
+    c.tangentialDampingRatio = contact.getOrDefault<scalar>
+    (
+        "tangentialDampingRatio", c.tangentialDampingRatio
+    );
+    c.youngsModulus =
+        contact.getOrDefault<scalar>("youngsModulus", c.youngsModulus);
+    c.poissonRatio =
+        contact.getOrDefault<scalar>("poissonRatio", c.poissonRatio);
+
+    s.equilibrationTime = dict.getOrDefault<scalar>("equilibrationTime", 0);
+    s.maxEquilibrationTime =
+        dict.getOrDefault<scalar>("maxEquilibrationTime", 0);
+    s.samplingTime = dict.get<scalar>("samplingTime");
+    s.sampleEvery = dict.getOrDefault<label>("sampleEvery", 10);
+    s.blocks = dict.getOrDefault<label>("blocks", 8);
+    s.seed = dict.getOrDefault<label>("seed", 1);
+    s.progressEvery = dict.getOrDefault<label>("progressEvery", 10000);
+    s.label = dict.getOrDefault<word>("name", "periodicDEM");
+
+    return s;
+}
+
+} // End anonymous namespace
+
+
+int main(int argc, char *argv[])
+{
+    argList::addNote
+    (
+        "Run one periodic DEM cell (system/periodicDEMDict, species from"
+        " constant/granularProperties) and write"
+        " postProcessing/periodicDEM/<name>.h5"
+    );
+    argList::noParallel();
+
+    #include "setRootCase.H"
+    #include "createTime.H"
+
+    IOdictionary properties
+    (
+        IOobject
+        (
+            "granularProperties",
+            runTime.constant(),
+            runTime,
+            IOobject::MUST_READ,
+            IOobject::NO_WRITE
+        )
+    );
+    IOdictionary dict
+    (
+        IOobject
+        (
+            "periodicDEMDict",
+            runTime.system(),
+            runTime,
+            IOobject::MUST_READ,
+            IOobject::NO_WRITE
+        )
+    );
+
+    const sdf::dem::CellRunSettings settings = readSettings(properties, dict);
+
+    const fileName outDir(runTime.globalPath()/"postProcessing"/"periodicDEM");
+    const fileName outFile(outDir/(settings.label + ".h5"));
+
+    sdf::dem::CellRunResult result;
+    try
+    {
+        sdf::dem::validateCellRunSettings(settings);
+        Info<< "Running periodic DEM cell '" << settings.label << "': "
+            << settings.particles << " particles, solids fraction "
+            << settings.solidsFraction << nl << endl;
+        result = sdf::dem::runCell(settings);
+    }
+    catch (const std::exception& err)
+    {
+        FatalIOErrorInFunction(dict)
+            << "The DEM engine refused or stopped the cell:" << nl
+            << "    " << err.what() << nl << exit(FatalIOError);
+    }
+
+    Info<< sdf::dem::summary(result).c_str() << nl;
+
+    mkDir(outDir);
+    try
+    {
+        sdf::dem::writeCellRun(result, outFile);
+    }
+    catch (const std::exception& err)
+    {
+        FatalErrorInFunction
+            << "Writing " << outFile << " failed:" << nl
+            << "    " << err.what() << nl << exit(FatalError);
+    }
+
+    Info<< "Written " << outFile << " (h5dump -H to inspect)" << nl
+        << "End" << nl << endl;
+
+    return 0;
+}
+
+
+// ************************************************************************* //
