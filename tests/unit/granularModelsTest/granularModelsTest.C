@@ -237,6 +237,81 @@ TEST(diffusivity, constantAndNone)
 }
 
 
+TEST(diffusivity, calibratedLawsAndEnvelope)
+{
+    setFields(0.48, 0.12);
+
+    // powerLaw with the seed's parameters: the powerLaw model's value
+    autoPtr<diffusivityModel> Dcal
+    (
+        diffusivityModel::New(dictOf("model calibrated;"), *testMixturePtr)
+    );
+    const volScalarField T(uniformT(0.01));
+    const scalar expected = 6*1.2*0.01*Foam::pow(0.6, -1.5);
+    // phi = 0.6 is outside phiRange (0.1 0.55): clamped to 0.55
+    const scalar expectedClamped = 6*1.2*0.01*Foam::pow(0.55, -1.5);
+    EXPECT_NEAR(Dcal->Dmixture(T)()[0], expectedClamped, 1e-12*expected);
+
+    autoPtr<diffusivityModel> Dext
+    (
+        diffusivityModel::New
+        (
+            dictOf("model calibrated; calibratedCoeffs { outsideEnvelope extrapolate; }"),
+            *testMixturePtr
+        )
+    );
+    EXPECT_NEAR(Dext->Dmixture(T)()[0], expected, 1e-12*expected);
+
+    // T above TRange (0.1): clamped
+    const volScalarField Thot(uniformT(1));
+    setFields(0.4, 0.1);
+    EXPECT_NEAR
+    (
+        Dcal->Dmixture(Thot)()[0],
+        6*1.2*0.1*Foam::pow(0.5, -1.5),
+        1e-12
+    );
+
+    // error policy names the variable and the envelope
+    autoPtr<diffusivityModel> Derr
+    (
+        diffusivityModel::New
+        (
+            dictOf("model calibrated; calibratedCoeffs { outsideEnvelope error; }"),
+            *testMixturePtr
+        )
+    );
+    expectFoamError([&]{ Derr->Dmixture(Thot); }, {"envelope", "T 1"});
+
+    // kineticTheoryGroups: C d sqrt(T/3)(1 + alpha x)/(phi g0), own diameter
+    autoPtr<diffusivityModel> Dkt
+    (
+        diffusivityModel::New
+        (
+            dictOf("model calibrated; calibratedCoeffs { file granularCoefficientsKT; }"),
+            *testMixturePtr
+        )
+    );
+    const scalar phi = 0.5, x = 0.2;
+    const scalar g0 = (1 - phi/2)/pow3(1 - phi);
+    const scalar Dfine = 0.15*1e-3*Foam::sqrt(0.01/3)*(1 + 0.8*x)/(phi*g0);
+    EXPECT_NEAR(Dkt->D(0, T)()[0], Dfine, 1e-12*Dfine);
+    EXPECT_NEAR(Dkt->D(1, T)()[0], 2*Dfine, 1e-12*Dfine);
+
+    // Bad input: unknown mode, unknown policy
+    expectFoamError
+    (
+        []{ diffusivityModel::New(dictOf("model calibrated; calibratedCoeffs { mode tabulated; }"), *testMixturePtr); },
+        {"tabulated", "law"}
+    );
+    expectFoamError
+    (
+        []{ diffusivityModel::New(dictOf("model calibrated; calibratedCoeffs { outsideEnvelope guess; }"), *testMixturePtr); },
+        {"guess", "clamp", "extrapolate", "error"}
+    );
+}
+
+
 // * * * * * * * * * * * * * Segregation fluxes * * * * * * * * * * * * * * //
 
 TEST(percolation, grayThorntonDriftAlongGravity)
@@ -306,6 +381,55 @@ TEST(kineticSieving, velocityGradientDrift)
         const scalar expected =
             -1e-3*(lnN - lnP)*deltaCoeffs[facei]*magSf[facei];
         EXPECT_NEAR(W[facei], expected, 1e-14);
+    }
+}
+
+
+TEST(kineticSieving, calibratedEtaDrift)
+{
+    setFields(0.32, 0.08);   // phi 0.4, x 0.2
+    autoPtr<bulkFlowModel> flow
+    (
+        bulkFlowModel::New(dictOf("model prescribed;"), *testMixturePtr)
+    );
+    // Registers T = 3 (dMean gammaDot/R)^2
+    autoPtr<granularTemperatureModel> temp
+    (
+        granularTemperatureModel::New
+        (
+            dictOf("model savageJeffrey; savageJeffreyCoeffs { R 1; }"),
+            *testMixturePtr
+        )
+    );
+    temp->correct(flow());
+    autoPtr<kineticSievingModel> sieving
+    (
+        kineticSievingModel::New
+        (
+            dictOf("model calibrated; calibratedCoeffs { Umin 1e-9; }"),
+            *testMixturePtr,
+            flow()
+        )
+    );
+    sieving->correct();
+    const surfaceScalarField W(sieving->driftFlux(0, 1));
+
+    // eta = E d_coarse sqrt(T/3) phi^p (1 + beta x), uniform here
+    const scalar T = 3*sqr(1.2e-3*gammaDot0);
+    const scalar eta =
+        0.5*2e-3*Foam::sqrt(T/3)*Foam::pow(0.4, -1.2)*(1 + 2*0.2);
+
+    const labelUList& own = testMeshPtr->owner();
+    const labelUList& nei = testMeshPtr->neighbour();
+    const volVectorField& C = testMeshPtr->C();
+    forAll(W, facei)
+    {
+        const scalar dLnU =
+            Foam::log(C[nei[facei]].z()/C[own[facei]].z());
+        const scalar expected =
+            -eta*dLnU*testMeshPtr->deltaCoeffs()[facei]
+           *testMeshPtr->magSf()[facei];
+        EXPECT_NEAR(W[facei], expected, 1e-12*mag(eta) + 1e-18);
     }
 }
 

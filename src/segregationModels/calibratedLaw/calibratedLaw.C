@@ -1,0 +1,233 @@
+/*---------------------------------------------------------------------------*\
+  =========                 |
+  \\      /  F ield         | segregationDegradationFoam
+   \\    /   O peration     |
+    \\  /    A nd           |
+     \\/     M anipulation  |
+\*---------------------------------------------------------------------------*/
+
+#include "calibratedLaw.H"
+#include "zeroGradientFvPatchFields.H"
+
+const Foam::Enum<Foam::calibratedLaw::outsidePolicy>
+Foam::calibratedLaw::outsidePolicyNames
+({
+    { outsidePolicy::clamp, "clamp" },
+    { outsidePolicy::extrapolate, "extrapolate" },
+    { outsidePolicy::error, "error" },
+});
+
+
+namespace
+{
+
+const Foam::HashTable<Foam::wordList> lawParameters
+({
+    {"powerLaw", Foam::wordList({"A", "a", "m", "b"})},
+    {"kineticTheoryGroups", Foam::wordList({"C", "alpha"})},
+    {"sievingPowerLaw", Foam::wordList({"E", "p", "beta"})}
+});
+
+Foam::Tuple2<Foam::scalar, Foam::scalar> readRange
+(
+    const Foam::dictionary& dict,
+    const Foam::word& name
+)
+{
+    const Foam::scalarList r(dict.get<Foam::scalarList>(name));
+    if (r.size() != 2 || !(r[0] <= r[1]))
+    {
+        FatalIOErrorInFunction(dict)
+            << "Entry '" << name << "' must be (min max) with min <= max, got "
+            << r << Foam::nl << Foam::exit(Foam::FatalIOError);
+    }
+    return Foam::Tuple2<Foam::scalar, Foam::scalar>(r[0], r[1]);
+}
+
+} // End anonymous namespace
+
+
+Foam::calibratedLaw::calibratedLaw
+(
+    const dictionary& coeffsDict,
+    const word& coefficient,
+    const dictionary& modelDict
+)
+:
+    coefficient_(coefficient),
+    law_(),
+    params_(),
+    policy_
+    (
+        outsidePolicyNames.getOrDefault
+        (
+            "outsideEnvelope",
+            modelDict,
+            outsidePolicy::clamp
+        )
+    ),
+    diameterPower_(1)
+{
+    if (modelDict.found("mode") && modelDict.get<word>("mode") != "law")
+    {
+        FatalIOErrorInFunction(modelDict)
+            << "mode '" << modelDict.get<word>("mode") << "' is not available"
+            << " in this version; valid: (law)" << nl << exit(FatalIOError);
+    }
+
+    if (!coeffsDict.isDict(coefficient))
+    {
+        FatalIOErrorInFunction(coeffsDict)
+            << "No calibrated law for '" << coefficient << "' in "
+            << coeffsDict.name() << "; run calibrateGranularMixture with"
+            << " this coefficient, or choose another model" << nl
+            << exit(FatalIOError);
+    }
+    const dictionary& dict = coeffsDict.subDict(coefficient);
+
+    law_ = dict.get<word>("law");
+    if (!lawParameters.found(law_))
+    {
+        FatalIOErrorInFunction(dict)
+            << "Unknown law '" << law_ << "' for " << coefficient
+            << "; valid: " << lawParameters.sortedToc() << nl
+            << exit(FatalIOError);
+    }
+    for (const word& p : lawParameters[law_])
+    {
+        const scalar v = dict.get<scalar>(p);
+        if (!std::isfinite(v))
+        {
+            FatalIOErrorInFunction(dict)
+                << "Parameter '" << p << "' of " << coefficient
+                << " is not finite" << nl << exit(FatalIOError);
+        }
+        params_.set(p, v);
+    }
+    diameterPower_ = dict.getOrDefault<scalar>("diameterPower", 1);
+
+    phiRange_ = readRange(dict, "phiRange");
+    xRange_ = readRange(dict, "xRange");
+    TRange_ = readRange(dict, "TRange");
+
+    Info<< "    calibrated " << coefficient << ": " << law_ << " "
+        << params_ << ", outside the envelope: "
+        << outsidePolicyNames[policy_] << nl;
+}
+
+
+Foam::IOdictionary Foam::calibratedLaw::readCoefficients
+(
+    const granularMixture& mixture,
+    const dictionary& modelDict
+)
+{
+    return IOdictionary
+    (
+        IOobject
+        (
+            modelDict.getOrDefault<word>("file", "granularCoefficients"),
+            mixture.mesh().time().constant(),
+            mixture.mesh(),
+            IOobject::MUST_READ,
+            IOobject::NO_WRITE,
+            false
+        )
+    );
+}
+
+
+Foam::scalar Foam::calibratedLaw::value
+(
+    const scalar phi,
+    const scalar x,
+    const scalar T,
+    const scalar d
+) const
+{
+    const scalar T1 = max(T, scalar(0))/3;
+
+    if (law_ == "powerLaw")
+    {
+        return
+            param("A")*pow(1 + x, param("a"))*pow(max(T, scalar(0)), param("m"))
+           *pow(phi, param("b"));
+    }
+    if (law_ == "kineticTheoryGroups")
+    {
+        const scalar g0 = (1 - phi/2)/pow3(1 - phi);
+        return param("C")*d*sqrt(T1)*(1 + param("alpha")*x)/(phi*g0);
+    }
+    // sievingPowerLaw
+    return
+        param("E")*pow(d, diameterPower_)*sqrt(T1)*pow(phi, param("p"))
+       *(1 + param("beta")*x);
+}
+
+
+Foam::tmp<Foam::volScalarField> Foam::calibratedLaw::evaluate
+(
+    const granularMixture& mixture,
+    const volScalarField& T,
+    const scalar d,
+    const dimensionSet& dims
+) const
+{
+    const volScalarField phiReg(mixture.phiRegularised());
+    const volScalarField x(mixture.coarseFraction());
+    const scalarField& phi = mixture.nTotal().primitiveField();
+
+    tmp<volScalarField> tresult
+    (
+        volScalarField::New
+        (
+            coefficient_ + "Calibrated",
+            mixture.mesh(),
+            dimensionedScalar("zero", dims, Zero),
+            zeroGradientFvPatchScalarField::typeName
+        )
+    );
+    scalarField& result = tresult.ref().primitiveFieldRef();
+
+    auto clampTo = [](scalar v, const Tuple2<scalar, scalar>& r)
+    {
+        return min(max(v, r.first()), r.second());
+    };
+
+    forAll(result, celli)
+    {
+        scalar p = phiReg[celli];
+        scalar xc = x[celli];
+        scalar Tc = T[celli];
+
+        const bool holdsMaterial = phi[celli] >= mixture.phiMin();
+        if (holdsMaterial && policy_ != outsidePolicy::extrapolate)
+        {
+            const scalar pc = clampTo(p, phiRange_);
+            const scalar xcl = clampTo(xc, xRange_);
+            const scalar Tcl = clampTo(Tc, TRange_);
+            if (policy_ == outsidePolicy::error && (pc != p || xcl != xc || Tcl != Tc))
+            {
+                FatalErrorInFunction
+                    << "Cell " << celli << " (centre "
+                    << mixture.mesh().C()[celli] << ") is outside the"
+                    << " envelope of the calibrated " << coefficient_
+                    << ": phi " << p << " in " << phiRange_
+                    << ", x " << xc << " in " << xRange_
+                    << ", T " << Tc << " in " << TRange_ << nl
+                    << "    (outsideEnvelope error; use clamp or extrapolate,"
+                    << " or widen the calibration)" << nl << exit(FatalError);
+            }
+            p = pc;
+            xc = xcl;
+            Tc = Tcl;
+        }
+        result[celli] = value(p, xc, Tc, d);
+    }
+
+    tresult.ref().correctBoundaryConditions();
+    return tresult;
+}
+
+
+// ************************************************************************* //

@@ -1,0 +1,43 @@
+/*---------------------------------------------------------------------------*\
+  =========                 |
+  \\      /  F ield         | segregationDegradationFoam
+   \\    /   O peration     |
+    \\  /    A nd           |
+     \\/     M anipulation  |
+\*---------------------------------------------------------------------------*/
+
+#include "calibratedDiffusivity.H"
+#include "addToRunTimeSelectionTable.H"
+
+namespace Foam
+{
+namespace diffusivityModels
+{
+    defineTypeNameAndDebug(calibrated, 0);
+    addToRunTimeSelectionTable(diffusivityModel, calibrated, dictionary);
+}
+}
+
+
+Foam::diffusivityModels::calibrated::calibrated
+(
+    const dictionary& dict,
+    const granularMixture& mixture
+)
+:
+    diffusivityModel(typeName, dict, mixture),
+    law_(calibratedLaw::readCoefficients(mixture, coeffs_), "D", coeffs_)
+{}
+
+
+Foam::tmp<Foam::volScalarField> Foam::diffusivityModels::calibrated::Dlaw
+(
+    const label i,
+    const volScalarField& T
+) const
+{
+    return law_.evaluate(mixture_, T, mixture_.d(i), dimArea/dimTime);
+}
+
+
+// ************************************************************************* //

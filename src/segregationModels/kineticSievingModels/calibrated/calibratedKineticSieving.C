@@ -1,0 +1,104 @@
+/*---------------------------------------------------------------------------*\
+  =========                 |
+  \\      /  F ield         | segregationDegradationFoam
+   \\    /   O peration     |
+    \\  /    A nd           |
+     \\/     M anipulation  |
+\*---------------------------------------------------------------------------*/
+
+#include "calibratedKineticSieving.H"
+#include "addToRunTimeSelectionTable.H"
+#include "fvcSnGrad.H"
+#include "surfaceInterpolate.H"
+
+namespace Foam
+{
+namespace kineticSievingModels
+{
+    defineTypeNameAndDebug(calibrated, 0);
+    addToRunTimeSelectionTable(kineticSievingModel, calibrated, dictionary);
+}
+}
+
+
+Foam::kineticSievingModels::calibrated::calibrated
+(
+    const dictionary& dict,
+    const granularMixture& mixture,
+    const bulkFlowModel& bulkFlow
+)
+:
+    kineticSievingModel(typeName, dict, mixture),
+    bulkFlow_(bulkFlow),
+    law_(calibratedLaw::readCoefficients(mixture, coeffs_), "eta", coeffs_),
+    Umin_(coeffs_.getOrDefault<scalar>("Umin", 1e-6)),
+    etaGradLnUSf_
+    (
+        IOobject
+        (
+            "etaGradLnUSf",
+            mixture.mesh().time().timeName(),
+            mixture.mesh(),
+            IOobject::NO_READ,
+            IOobject::NO_WRITE,
+            false
+        ),
+        mixture.mesh(),
+        dimensionedScalar("zero", dimVolume/dimTime, Zero)
+    )
+{
+    if (!(Umin_ > 0))
+    {
+        FatalIOErrorInFunction(coeffs_)
+            << "'Umin " << Umin_ << "' must be > 0 [m/s]" << nl
+            << exit(FatalIOError);
+    }
+}
+
+
+void Foam::kineticSievingModels::calibrated::correct()
+{
+    const fvMesh& mesh = mixture_.mesh();
+
+    // The granular temperature of the run (registered by the
+    // granularTemperature model)
+    const volScalarField& T = mesh.lookupObject<volScalarField>("T");
+
+    const volScalarField eta
+    (
+        law_.evaluate
+        (
+            mixture_,
+            T,
+            mixture_.d(mixture_.coarsest()),
+            dimArea/dimTime
+        )*mixture_.presence()
+    );
+
+    const volScalarField lnU
+    (
+        log
+        (
+            max(mag(bulkFlow_.U()), dimensionedScalar("Umin", dimVelocity, Umin_))
+           /dimensionedScalar("one", dimVelocity, 1)
+        )
+    );
+    etaGradLnUSf_ =
+        fvc::interpolate(eta)*fvc::snGrad(lnU)*mesh.magSf();
+    zeroUncoupledPatches(etaGradLnUSf_);
+}
+
+
+Foam::tmp<Foam::surfaceScalarField>
+Foam::kineticSievingModels::calibrated::driftFlux
+(
+    const label finei,
+    const label coarsej
+) const
+{
+    // The coarse moves up the gradient, the fine drifts down it
+    return -pairScale(mixture_, finei, coarsej)*etaGradLnUSf_;
+}
+
+
+// ************************************************************************* //
