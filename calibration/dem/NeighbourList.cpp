@@ -139,7 +139,7 @@ void NeighbourList::build(const Particles& p, const PeriodicBox& box, double ski
     for (int k = 0; k < nPairs; ++k)
     {
         incidentPairs_[fill[first_[k]]++] = k;
-        incidentPairs_[fill[second_[k]]++] = k;
+        incidentPairs_[fill[second_[k]]++] = -(k + 1);
     }
     ++builds_;
 }

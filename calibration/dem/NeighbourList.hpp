@@ -26,7 +26,8 @@ public:
     const std::vector<int>& first() const { return first_; }
     const std::vector<int>& second() const { return second_; }
 
-    //- Pairs incident to particle p: incidentPairs()[incidentStart()[p] .. incidentStart()[p+1])
+    //- Pairs incident to particle p: incidentPairs()[incidentStart()[p] .. incidentStart()[p+1]),
+    //  entry k >= 0 when p is the pair's first particle, -(k + 1) when it is the second
     const std::vector<int>& incidentStart() const { return incidentStart_; }
     const std::vector<int>& incidentPairs() const { return incidentPairs_; }
 

@@ -268,8 +268,10 @@ void Simulation::importState(const SimulationState& st)
     list_.restorePairs(st.pairFirst, st.pairSecond);
     history_ = st.history;
     for (auto* a : {&pfx_, &pfy_, &pfz_, &pcx_, &pcy_, &pcz_}) a->assign(nPairs, 0.0);
+    active_.assign(nPairs, 0);
     for (std::size_t k = 0; k < nPairs; ++k)
     {
+        active_[k] = history_[k].touching ? 1 : 0;
         pfx_[k] = st.pairForce[3*k]; pfy_[k] = st.pairForce[3*k + 1]; pfz_[k] = st.pairForce[3*k + 2];
         pcx_[k] = st.pairNCrossFt[3*k]; pcy_[k] = st.pairNCrossFt[3*k + 1]; pcz_[k] = st.pairNCrossFt[3*k + 2];
     }
@@ -354,6 +356,9 @@ void Simulation::rebuildNeighbourList()
         }
     }
     for (auto* a : {&pfx_, &pfy_, &pfz_, &pcx_, &pcy_, &pcz_}) a->assign(nPairs, 0.0);
+    // the pair loop that follows every rebuild fills the slots of touching pairs
+    active_.assign(nPairs, 0);
+    for (std::size_t k = 0; k < nPairs; ++k) active_[k] = history_[k].touching ? 1 : 0;
     std::fill(dispX_.begin(), dispX_.end(), 0.0);
     std::fill(dispY_.begin(), dispY_.end(), 0.0);
     std::fill(dispZ_.begin(), dispZ_.end(), 0.0);
@@ -362,9 +367,9 @@ void Simulation::rebuildNeighbourList()
     listValid_ = true;
 }
 
-void Simulation::computeForces()
+void Simulation::computeForces(bool checkDisplacements)
 {
-    if (!listValid_ || neighbourListExpired()) rebuildNeighbourList();
+    if (!listValid_ || (checkDisplacements && neighbourListExpired())) rebuildNeighbourList();
 
     Particles& p = particles_;
     const int n = int(p.size());
@@ -413,13 +418,19 @@ void Simulation::computeForces()
             const double reach = ri + rj;
             if (dx*dx + dy*dy + dz*dz >= reach*reach)
             {
-                // not touching: cheap exit without the velocity gathers
-                history_[k].touching = false;
-                history_[k].ft[0] = history_[k].ft[1] = history_[k].ft[2] = 0;
-                pfx_[k] = pfy_[k] = pfz_[k] = 0;
-                pcx_[k] = pcy_[k] = pcz_[k] = 0;
+                // not touching: cheap exit; slots and history are cleared once, when a
+                // contact ends
+                if (active_[k])
+                {
+                    active_[k] = 0;
+                    history_[k].touching = false;
+                    history_[k].ft[0] = history_[k].ft[1] = history_[k].ft[2] = 0;
+                    pfx_[k] = pfy_[k] = pfz_[k] = 0;
+                    pcx_[k] = pcy_[k] = pcz_[k] = 0;
+                }
                 continue;
             }
+            active_[k] = 1;
             kin.radiusI = ri; kin.radiusJ = rj;
             kin.dvHalf[0] = p.vx[i] - p.vx[j] + shiftVx;
             kin.dvHalf[1] = p.vy[i] - p.vy[j];
@@ -466,9 +477,17 @@ void Simulation::computeForces()
             double fx = 0, fy = 0, fz = 0, cx = 0, cy = 0, cz = 0;
             for (int m = start[i]; m < start[i + 1]; ++m)
             {
-                const int k = pairsOf[m];
-                const double sign = first[k] == i ? 1.0 : -1.0;
-                fx += sign*pfx_[k]; fy += sign*pfy_[k]; fz += sign*pfz_[k];
+                const int code = pairsOf[m];
+                const int k = code >= 0 ? code : -(code + 1);
+                if (!active_[k]) continue;
+                if (code >= 0)
+                {
+                    fx += pfx_[k]; fy += pfy_[k]; fz += pfz_[k];
+                }
+                else
+                {
+                    fx -= pfx_[k]; fy -= pfy_[k]; fz -= pfz_[k];
+                }
                 cx += pcx_[k]; cy += pcy_[k]; cz += pcz_[k];
             }
             const double r = p.radius[i];
@@ -566,38 +585,49 @@ void Simulation::step()
     const double shearRate = box_.shearRate;
     const double yMid = 0.5*box_.ly;
 
-    #pragma omp parallel for schedule(static) num_threads(nThreads_)
+    // one pass: kick, drift, Lees-Edwards wrap (with the offset at the new time),
+    // synchronised velocity estimate, largest peculiar displacement since the last build
+    box_.advanceShear(dt);
+    const PeriodicBox box = box_;
+    double maxDisp2 = 0;
+    #pragma omp parallel for schedule(static) num_threads(nThreads_) reduction(max:maxDisp2)
     for (int i = 0; i < n; ++i)
     {
         const double im = p.invMass[i], ii = p.invInertia[i];
-        p.vx[i] += h*p.fx[i]*im; p.vy[i] += h*p.fy[i]*im; p.vz[i] += h*p.fz[i]*im;
-        p.wx[i] += h*p.tx[i]*ii; p.wy[i] += h*p.ty[i]*ii; p.wz[i] += h*p.tz[i]*ii;
+        const double fxm = h*p.fx[i]*im, fym = h*p.fy[i]*im, fzm = h*p.fz[i]*im;
+        const double txi = h*p.tx[i]*ii, tyi = h*p.ty[i]*ii, tzi = h*p.tz[i]*ii;
+        p.vx[i] += fxm; p.vy[i] += fym; p.vz[i] += fzm;
+        p.wx[i] += txi; p.wy[i] += tyi; p.wz[i] += tzi;
 
         const double ddx = dt*p.vx[i], ddy = dt*p.vy[i], ddz = dt*p.vz[i];
         dispX_[i] += ddx - dt*shearRate*(p.y[i] - yMid);
         dispY_[i] += ddy;
         dispZ_[i] += ddz;
+        const double d2 = dispX_[i]*dispX_[i] + dispY_[i]*dispY_[i] + dispZ_[i]*dispZ_[i];
+        if (d2 > maxDisp2) maxDisp2 = d2;
         p.ux[i] += ddx; p.uy[i] += ddy; p.uz[i] += ddz;
         p.x[i] += ddx; p.y[i] += ddy; p.z[i] += ddz;
-    }
-    box_.advanceShear(dt);
-    #pragma omp parallel for schedule(static) num_threads(nThreads_)
-    for (int i = 0; i < n; ++i)
-    {
-        box_.wrap(p.x[i], p.y[i], p.z[i], p.vx[i]);
-        const double im = p.invMass[i], ii = p.invInertia[i];
-        svx_[i] = p.vx[i] + h*p.fx[i]*im;
-        svy_[i] = p.vy[i] + h*p.fy[i]*im;
-        svz_[i] = p.vz[i] + h*p.fz[i]*im;
-        swx_[i] = p.wx[i] + h*p.tx[i]*ii;
-        swy_[i] = p.wy[i] + h*p.ty[i]*ii;
-        swz_[i] = p.wz[i] + h*p.tz[i]*ii;
+
+        box.wrap(p.x[i], p.y[i], p.z[i], p.vx[i]);
+        svx_[i] = p.vx[i] + fxm;
+        svy_[i] = p.vy[i] + fym;
+        svz_[i] = p.vz[i] + fzm;
+        swx_[i] = p.wx[i] + txi;
+        swy_[i] = p.wy[i] + tyi;
+        swz_[i] = p.wz[i] + tzi;
     }
     time_ += dt;
     timeSinceBuild_ += dt;
     if (collisionsEnabled_) collisions_.elapsedTime += dt;
 
-    computeForces();
+    {
+        const double shearDrift = std::abs(box_.shearRate)*timeSinceBuild_*(list_.cutoff() + skin_);
+        if (2*std::sqrt(maxDisp2) + shearDrift + 2*radiusGrowthSinceBuild_ >= skin_)
+        {
+            listValid_ = false;
+        }
+    }
+    computeForces(false);
 
     #pragma omp parallel for schedule(static) num_threads(nThreads_)
     for (int i = 0; i < n; ++i)

@@ -186,7 +186,9 @@ public:
     Eigen::Vector3d meanVelocity() const;
 
 private:
-    void computeForces();
+    //- checkDisplacements: test the list's validity from the displacements (step() has
+    //  done that already in its drift loop)
+    void computeForces(bool checkDisplacements = true);
     void rebuildNeighbourList();
     bool neighbourListExpired() const;
     void applyThermostat();
@@ -209,6 +211,7 @@ private:
     bool listValid_ = false;
     std::vector<ContactHistory> history_;
     std::vector<double> pfx_, pfy_, pfz_, pcx_, pcy_, pcz_;   // per-pair force on i, n x F_t
+    std::vector<unsigned char> active_;   // per pair: force slots hold a contact (else zero)
     std::vector<std::vector<ContactHistory>> wallHistory_;    // per wall, per particle
 
     // synchronised velocity estimates v^{n+1/2} + dt/2 a^n
