@@ -1,0 +1,995 @@
+/*---------------------------------------------------------------------------*\
+  =========                 |
+  \\      /  F ield         | segregationDegradationFoam
+   \\    /   O peration     |
+    \\  /    A nd           |
+     \\/     M anipulation  |
+-------------------------------------------------------------------------------
+Application
+    calibrateGranularMixture
+
+Group
+    grpPreProcessingUtilities
+
+Description
+    Calibration workflow of a binary mixture: runs the embedded periodic DEM
+    engine (calibration/dem) over an envelope of conditions (solids fraction
+    phi, coarse fraction x, granular temperature T, replicas), stores every
+    finished condition at once in constant/calibration.h5 (a rerun skips the
+    stored ones), fits constitutive laws (calibration/fit) to the diffusivity
+    of the fines (D) and the kinetic sieving coefficient of the coarse (eta),
+    chooses among candidate laws by AIC and writes constant/granularCoefficients.
+
+    Species (d, rho) come from constant/granularProperties (exactly two: the
+    smaller is the fine species); the rest from system/calibrationDict:
+    \verbatim
+    phi             (0.2 0.3);          // total solids fractions, 0 < phi < 0.64
+    x               (0.2 0.4);          // coarse fractions of the solids, 0 < x < 1
+    T               (0.005 0.01);       // granular temperature [m2/s2], sum of 3 components
+    replicas        (1);                // DEM seeds: one run per seed and condition
+    coefficients    (D eta);            // which to calibrate: D (fines), eta (coarse)
+    laws            (powerLaw kineticTheoryGroups);   // candidate laws for D
+    etaDiameterPower 1;                 // k of sievingPowerLaw (eta)
+    particles       200;
+    mode            thermostatted;
+    contact         { model linearSpringDashpot; restitution 0.9; friction 0.3;
+                      normalStiffness 2e3; }
+    timeStep        0;
+    equilibrationTime 0.002;
+    samplingTime    0.01;
+    sampleEvery     10;
+    blocks          8;
+    threads         1;
+    plot            true;               // gnuplot PNGs in postProcessing/calibration
+    \endverbatim
+    Bad input stops with a FatalIOError naming the entry; a calibration.h5
+    that is not ours (corrupt, foreign) stops with a FatalError naming the
+    file and is left untouched. Documentation: docs/calibration.md.
+
+\*---------------------------------------------------------------------------*/
+
+#include "argList.H"
+#include "Time.H"
+#include "IOdictionary.H"
+#include "OSspecific.H"
+#include "clock.H"
+
+#include "CellRun.hpp"
+#include "io/Hdf5File.hpp"
+#include "fit/FitData.hpp"
+#include "fit/Laws.hpp"
+#include "fit/LeastSquares.hpp"
+#include "fit/ModelSelection.hpp"
+#include "fit/OpenFOAMDictionary.hpp"
+
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <iomanip>
+#include <map>
+#include <set>
+#include <sstream>
+#include <stdexcept>
+
+using namespace Foam;
+
+namespace
+{
+
+const char* const contentName = "calibrateGranularMixture conditions";
+
+//- Jamming limit of the envelope (random close packing)
+const scalar phiJamming = 0.64;
+
+const wordList validEntries
+({
+    "phi", "x", "T", "replicas", "coefficients", "laws", "etaDiameterPower",
+    "particles", "mode", "contact", "timeStep", "equilibrationTime",
+    "maxEquilibrationTime", "samplingTime", "sampleEvery", "blocks",
+    "threads", "thermostatTime", "skin", "maxOverlapFraction", "plot"
+});
+
+const wordList validContactEntries
+({
+    "model", "restitution", "friction", "normalStiffness",
+    "tangentialStiffnessRatio", "tangentialDampingRatio", "youngsModulus",
+    "poissonRatio"
+});
+
+const wordList validCoefficients({"D", "eta"});
+const wordList validDLaws({"powerLaw", "kineticTheoryGroups"});
+
+
+void checkEntries(const dictionary& dict, const wordList& valid)
+{
+    for (const word& key : dict.toc())
+    {
+        if (!valid.found(key))
+        {
+            FatalIOErrorInFunction(dict)
+                << "Unknown entry '" << key << "' in " << dict.name() << nl
+                << "    valid entries: " << valid << nl
+                << exit(FatalIOError);
+        }
+    }
+}
+
+
+std::string fmt(double v)
+{
+    char buf[64];
+    std::snprintf(buf, sizeof(buf), "%.6g", v);
+    return buf;
+}
+
+
+std::string fmt10(double v)
+{
+    char buf[64];
+    std::snprintf(buf, sizeof(buf), "%.10g", v);
+    return buf;
+}
+
+
+//- A list entry of the envelope: present, non-empty, every value in (lo, hi)
+scalarList readEnvelopeList
+(
+    const dictionary& dict,
+    const word& key,
+    const scalar lo,
+    const scalar hi,
+    const string& meaning
+)
+{
+    if (!dict.found(key))
+    {
+        FatalIOErrorInFunction(dict)
+            << "Missing envelope entry '" << key << "' (" << meaning.c_str()
+            << ") in " << dict.name() << nl << exit(FatalIOError);
+    }
+    const scalarList values(dict.get<scalarList>(key));
+    if (values.empty())
+    {
+        FatalIOErrorInFunction(dict)
+            << "Envelope entry '" << key << "' (" << meaning.c_str()
+            << ") is empty: give at least one value" << nl
+            << exit(FatalIOError);
+    }
+    std::set<scalar> seen;
+    for (const scalar v : values)
+    {
+        if (!std::isfinite(v) || v <= lo || v >= hi)
+        {
+            FatalIOErrorInFunction(dict)
+                << "Envelope entry '" << key << "' (" << meaning.c_str()
+                << "): value " << v << " is outside (" << lo << ", "
+                << (hi > 1e300 ? std::string("inf") : fmt(hi)).c_str()
+                << ")" << nl << exit(FatalIOError);
+        }
+        if (!seen.insert(v).second)
+        {
+            FatalIOErrorInFunction(dict)
+                << "Envelope entry '" << key << "': value " << v
+                << " appears twice" << nl << exit(FatalIOError);
+        }
+    }
+    return values;
+}
+
+
+struct Setup
+{
+    // species: index 0 fine, 1 coarse
+    std::vector<sdf::dem::Species> species;
+    scalarList phi, x, T;
+    labelList replicas;
+    wordList coefficients;
+    wordList laws;
+    label etaDiameterPower = 1;
+    bool plot = true;
+    sdf::dem::CellRunSettings base;   // everything but the condition
+    std::string settingsKey;          // DEM settings a stored result belongs to
+};
+
+
+Setup readSetup(const dictionary& properties, const dictionary& dict)
+{
+    checkEntries(dict, validEntries);
+    Setup s;
+
+    // Species: exactly two, fine = smaller diameter
+    const dictionary& speciesDict = properties.subDict("species");
+    const wordList names(speciesDict.sortedToc());
+    if (names.size() != 2)
+    {
+        FatalIOErrorInFunction(speciesDict)
+            << "calibrateGranularMixture calibrates binary mixtures: "
+            << speciesDict.name() << " declares " << names.size()
+            << " species " << names << ", need 2" << nl << exit(FatalIOError);
+    }
+    for (const word& name : names)
+    {
+        const dictionary& sd = speciesDict.subDict(name);
+        s.species.push_back({name, sd.get<scalar>("d"), sd.get<scalar>("rho")});
+    }
+    if (s.species[1].diameter < s.species[0].diameter)
+    {
+        std::swap(s.species[0], s.species[1]);
+    }
+    if (!(s.species[1].diameter > s.species[0].diameter))
+    {
+        FatalIOErrorInFunction(speciesDict)
+            << "The two species have the same diameter: no fine and coarse"
+            << nl << exit(FatalIOError);
+    }
+
+    // Envelope
+    s.phi = readEnvelopeList(dict, "phi", 0, phiJamming, "solids fraction, below jamming 0.64");
+    s.x = readEnvelopeList(dict, "x", 0, 1, "coarse fraction of the solids");
+    s.T = readEnvelopeList(dict, "T", 0, 1e301, "granular temperature [m2/s2], sum of 3 components");
+
+    s.replicas = dict.getOrDefault<labelList>("replicas", labelList({1}));
+    if (s.replicas.empty())
+    {
+        FatalIOErrorInFunction(dict)
+            << "Entry 'replicas' (DEM seeds) is empty" << nl << exit(FatalIOError);
+    }
+    {
+        std::set<label> seen;
+        for (const label r : s.replicas)
+        {
+            if (r < 0 || !seen.insert(r).second)
+            {
+                FatalIOErrorInFunction(dict)
+                    << "Entry 'replicas': seed " << r
+                    << " is negative or appears twice" << nl << exit(FatalIOError);
+            }
+        }
+    }
+
+    s.coefficients = dict.getOrDefault<wordList>("coefficients", wordList({"D"}));
+    if (s.coefficients.empty())
+    {
+        FatalIOErrorInFunction(dict)
+            << "Entry 'coefficients' is empty; valid names: "
+            << validCoefficients << nl << exit(FatalIOError);
+    }
+    for (const word& c : s.coefficients)
+    {
+        if (!validCoefficients.found(c))
+        {
+            FatalIOErrorInFunction(dict)
+                << "Unknown coefficient '" << c << "' in entry 'coefficients'"
+                << nl << "    valid names: " << validCoefficients
+                << " (D: diffusivity of the fines, eta: kinetic sieving"
+                << " coefficient of the coarse)" << nl << exit(FatalIOError);
+        }
+    }
+    s.laws = dict.getOrDefault<wordList>("laws", validDLaws);
+    if (s.laws.empty())
+    {
+        FatalIOErrorInFunction(dict)
+            << "Entry 'laws' is empty; valid laws for D: " << validDLaws
+            << nl << exit(FatalIOError);
+    }
+    for (const word& l : s.laws)
+    {
+        if (!validDLaws.found(l))
+        {
+            FatalIOErrorInFunction(dict)
+                << "Unknown law '" << l << "' in entry 'laws'" << nl
+                << "    valid laws for D: " << validDLaws << nl
+                << exit(FatalIOError);
+        }
+    }
+    s.etaDiameterPower = dict.getOrDefault<label>("etaDiameterPower", 1);
+    s.plot = dict.getOrDefault<bool>("plot", true);
+
+    // DEM settings
+    sdf::dem::CellRunSettings& b = s.base;
+    b.species = s.species;
+    b.particles = dict.getOrDefault<label>("particles", 1000);
+    const word mode(dict.getOrDefault<word>("mode", "thermostatted"));
+    if (mode != "thermostatted")
+    {
+        FatalIOErrorInFunction(dict)
+            << "Entry 'mode' " << mode << ": calibrateGranularMixture runs"
+            << " driven cells only (mode thermostatted)" << nl
+            << exit(FatalIOError);
+    }
+    sdf::dem::SimulationSettings& sim = b.simulation;
+    sim.mode = sdf::dem::cellModeFromName(mode);
+    sim.thermostatTime = dict.getOrDefault<scalar>("thermostatTime", 0);
+    sim.maxOverlapFraction = dict.getOrDefault<scalar>("maxOverlapFraction", 0.1);
+    sim.timeStep = dict.getOrDefault<scalar>("timeStep", 0);
+    sim.threads = dict.getOrDefault<label>("threads", 0);
+    sim.skin = dict.getOrDefault<scalar>("skin", -1);
+
+    const dictionary& contact = dict.subOrEmptyDict("contact");
+    checkEntries(contact, validContactEntries);
+    sdf::dem::ContactSettings& c = sim.contact;
+    try
+    {
+        c.model = sdf::dem::contactModelFromName
+        (
+            contact.getOrDefault<word>("model", "linearSpringDashpot")
+        );
+    }
+    catch (const std::exception& err)
+    {
+        FatalIOErrorInFunction(contact)
+            << "Entry 'contact/model': " << err.what() << nl
+            << exit(FatalIOError);
+    }
+    c.restitution = contact.getOrDefault<scalar>("restitution", c.restitution);
+    c.friction = contact.getOrDefault<scalar>("friction", c.friction);
+    c.normalStiffness =
+        contact.getOrDefault<scalar>("normalStiffness", c.normalStiffness);
+    c.tangentialStiffnessRatio = contact.getOrDefault<scalar>
+    (
+        "tangentialStiffnessRatio", c.tangentialStiffnessRatio
+    );
+    c.tangentialDampingRatio = contact.getOrDefault<scalar>
+    (
+        "tangentialDampingRatio", c.tangentialDampingRatio
+    );
+    c.youngsModulus = contact.getOrDefault<scalar>("youngsModulus", c.youngsModulus);
+    c.poissonRatio = contact.getOrDefault<scalar>("poissonRatio", c.poissonRatio);
+
+    b.equilibrationTime = dict.getOrDefault<scalar>("equilibrationTime", 0);
+    b.maxEquilibrationTime = dict.getOrDefault<scalar>("maxEquilibrationTime", 0);
+    b.samplingTime = dict.get<scalar>("samplingTime");
+    b.sampleEvery = dict.getOrDefault<label>("sampleEvery", 10);
+    b.blocks = dict.getOrDefault<label>("blocks", 8);
+    b.progressEvery = 0;
+
+    // Fingerprint of the DEM settings (everything but the condition): a
+    // stored condition is reused only if it was run with the same settings.
+    std::ostringstream key;
+    key << "species";
+    for (const auto& sp : s.species)
+    {
+        key << " " << sp.name << ":" << fmt10(sp.diameter) << ":" << fmt10(sp.density);
+    }
+    key << "; particles " << b.particles
+        << "; contact " << contact.getOrDefault<word>("model", "linearSpringDashpot")
+        << " e " << fmt10(c.restitution) << " mu " << fmt10(c.friction)
+        << " kn " << fmt10(c.normalStiffness)
+        << " kt/kn " << fmt10(c.tangentialStiffnessRatio)
+        << " gt/gn " << fmt10(c.tangentialDampingRatio)
+        << " E " << fmt10(c.youngsModulus) << " nu " << fmt10(c.poissonRatio)
+        << "; timeStep " << fmt10(sim.timeStep)
+        << "; thermostatTime " << fmt10(sim.thermostatTime)
+        << "; equilibrationTime " << fmt10(b.equilibrationTime)
+        << "; maxEquilibrationTime " << fmt10(b.maxEquilibrationTime)
+        << "; samplingTime " << fmt10(b.samplingTime)
+        << "; sampleEvery " << b.sampleEvery << "; blocks " << b.blocks;
+    s.settingsKey = key.str();
+
+    return s;
+}
+
+
+struct ConditionSpec
+{
+    scalar phi, x, T;
+    label seed;
+    std::string name;
+};
+
+
+std::string conditionName(scalar phi, scalar x, scalar T, label seed)
+{
+    return "phi" + fmt(phi) + "_x" + fmt(x) + "_T" + fmt(T) + "_seed" + std::to_string(seed);
+}
+
+
+//- Condition groups already in the file, with their settings keys. Stops
+//  with a FatalError naming the file if it is not a calibration file of ours.
+std::map<std::string, std::string> storedConditions(const fileName& h5)
+{
+    std::map<std::string, std::string> stored;
+    if (!isFile(h5))
+    {
+        return stored;
+    }
+    try
+    {
+        sdf::io::File f = sdf::io::File::openReadOnly(h5);
+        const sdf::io::Group root = f.root();
+        if
+        (
+            !root.hasAttribute("content")
+         || root.attributeType("content") != sdf::io::AttributeType::string
+         || root.readString("content") != contentName
+        )
+        {
+            throw std::runtime_error
+            (
+                "it is a segregationDegradationFoam HDF5 file, but not one of"
+                " calibrateGranularMixture (root attribute content = \""
+              + std::string(contentName) + "\" missing)"
+            );
+        }
+        if (root.hasGroup("conditions"))
+        {
+            const sdf::io::Group conditions = root.openGroup("conditions");
+            for (const std::string& name : conditions.childNames())
+            {
+                stored[name] =
+                    conditions.openGroup(name).readString("settingsKey");
+            }
+        }
+    }
+    catch (const std::exception& err)
+    {
+        FatalErrorInFunction
+            << "Cannot use " << h5 << " as the calibration store:" << nl
+            << "    " << err.what() << nl
+            << "    The file is left untouched: move it away (or remove it)"
+            << " to start a new calibration." << nl << exit(FatalError);
+    }
+    return stored;
+}
+
+
+//- Appends one finished condition to the store, atomically (the file is
+//  copied to <file>.tmp, the group added, and the copy renamed over it).
+void storeCondition
+(
+    const fileName& h5,
+    const Setup& setup,
+    const ConditionSpec& cond,
+    const sdf::dem::CellRunResult& r
+)
+{
+    const bool exists = isFile(h5);
+    sdf::io::AtomicFile out =
+        exists ? sdf::io::AtomicFile::update(h5) : sdf::io::AtomicFile::create(h5);
+    const sdf::io::Group root = out.root();
+    if (!exists)
+    {
+        root.setAttribute("content", contentName);
+        root.setAttribute("fineSpecies", setup.species[0].name);
+        root.setAttribute("coarseSpecies", setup.species[1].name);
+    }
+    const sdf::io::Group g = root.createGroup("conditions/" + cond.name);
+    // inputs
+    g.setAttribute("phi", double(cond.phi));
+    g.setAttribute("x", double(cond.x));
+    g.setAttribute("targetT", double(cond.T));
+    g.setAttribute("seed", std::int64_t(cond.seed));
+    g.setAttribute("particles", std::int64_t(r.settings.particles));
+    g.setAttribute("settingsKey", setup.settingsKey);
+    // results
+    g.setAttribute("T", r.temperature);
+    g.setAttribute("TError", r.temperatureError);
+    g.setAttribute("equilibrated", std::int64_t(r.equilibrated ? 1 : 0));
+    g.setAttribute("equilibrationTime", r.equilibrationTime);
+    g.setAttribute("timeStep", r.timeStep);
+    g.setAttribute("boxLength", r.boxLength);
+    g.setAttribute("steps", std::int64_t(r.steps));
+    for (std::size_t i = 0; i < r.species.size(); ++i)
+    {
+        const sdf::dem::SpeciesTransport& st = r.species[i];
+        const sdf::io::Group sg = g.createGroup("species/" + st.name);
+        sg.setAttribute("role", i == 0 ? "fine" : "coarse");
+        sg.setAttribute("d", setup.species[i].diameter);
+        sg.setAttribute("count", std::int64_t(st.count));
+        sg.setAttribute("T", st.temperature);
+        sg.setAttribute("D", st.greenKubo.integral.value);
+        sg.setAttribute("DError", st.greenKubo.integral.standardError);
+        sg.setAttribute("DPlateauFound", std::int64_t(st.greenKubo.plateauFound ? 1 : 0));
+        sg.setAttribute("DMsd", st.diffusivityMsd.value);
+        sg.setAttribute("DMsdError", st.diffusivityMsd.standardError);
+        if (i < r.kineticSieving.size())
+        {
+            sg.setAttribute("eta", r.kineticSieving[i].value);
+            sg.setAttribute("etaError", r.kineticSieving[i].standardError);
+        }
+    }
+    // timings: the only attributes that differ between identical runs
+    const sdf::io::Group t = g.createGroup("timing");
+    t.setAttribute("wallSeconds", r.wallSeconds);
+    t.setAttribute("cpuSeconds", r.cpuSeconds);
+    t.setAttribute("particleStepsPerSecond", r.particleStepsPerSecond);
+    out.commit();
+}
+
+
+struct StoredResult
+{
+    ConditionSpec cond;
+    scalar T = 0;
+    scalar D = 0, DError = 0;        // fines
+    scalar eta = 0, etaError = 0;    // coarse
+    bool hasEta = false;
+};
+
+
+std::vector<StoredResult> readResults
+(
+    const fileName& h5,
+    const Setup& setup,
+    const std::vector<ConditionSpec>& conds
+)
+{
+    std::vector<StoredResult> out;
+    try
+    {
+        sdf::io::File f = sdf::io::File::openReadOnly(h5);
+        const sdf::io::Group conditions = f.root().openGroup("conditions");
+        for (const ConditionSpec& c : conds)
+        {
+            const sdf::io::Group g = conditions.openGroup(c.name);
+            StoredResult r;
+            r.cond = c;
+            r.T = g.readDouble("T");
+            const sdf::io::Group fine =
+                g.openGroup("species/" + setup.species[0].name);
+            const sdf::io::Group coarse =
+                g.openGroup("species/" + setup.species[1].name);
+            r.D = fine.readDouble("D");
+            r.DError = fine.readDouble("DError");
+            if (coarse.hasAttribute("eta"))
+            {
+                r.hasEta = true;
+                r.eta = coarse.readDouble("eta");
+                r.etaError = coarse.readDouble("etaError");
+            }
+            out.push_back(r);
+        }
+    }
+    catch (const std::exception& err)
+    {
+        FatalErrorInFunction
+            << "Reading the results back from " << h5 << " failed:" << nl
+            << "    " << err.what() << nl << exit(FatalError);
+    }
+    return out;
+}
+
+
+sdf::fit::ConstitutiveLaw lawFromName(const word& name)
+{
+    if (name == "powerLaw") return sdf::fit::SeedPowerLaw{};
+    return sdf::fit::KineticTheoryGroupsLaw{};
+}
+
+
+void reportFit(const sdf::fit::FitResult& fit)
+{
+    Info<< "    law " << fit.law.name().c_str() << ": "
+        << fit.law.formula().c_str() << nl;
+    if (!fit.converged())
+    {
+        Info<< "      FAILED: " << fit.message.c_str() << nl;
+        return;
+    }
+    for (const auto& p : fit.parameters)
+    {
+        Info<< "      " << p.name.c_str() << " = " << fmt(p.value).c_str()
+            << " +- " << fmt(p.standardError).c_str() << nl;
+    }
+    Info<< "      R2 = " << fmt(fit.rSquared).c_str()
+        << ", reduced chi2 = " << fmt(fit.reducedChiSquare).c_str()
+        << ", AIC = " << fmt(fit.aic).c_str()
+        << ", BIC = " << fmt(fit.bic).c_str()
+        << ", points = " << label(fit.points) << nl;
+}
+
+
+//- Data file and gnuplot PNG of D(fines) vs T per phi, one figure per x
+void plotD
+(
+    const fileName& dir,
+    const std::vector<StoredResult>& results,
+    const Setup& setup,
+    const sdf::fit::FitResult* fit
+)
+{
+    mkDir(dir);
+    for (const scalar x : setup.x)
+    {
+        const std::string tag = "x" + fmt(x);
+        const fileName dat(dir/("D_" + tag + ".dat"));
+        {
+            std::ofstream os(dat);
+            os << "# D of the fines vs T at x = " << fmt(x)
+               << "; blocks per phi: T D DError fitted\n";
+            for (const scalar phi : setup.phi)
+            {
+                os << "# phi " << fmt(phi) << "\n";
+                for (const StoredResult& r : results)
+                {
+                    if (r.cond.x != x || r.cond.phi != phi) continue;
+                    sdf::fit::Condition c{phi, x, r.T, setup.species[0].diameter, {}};
+                    os << std::setprecision(10) << r.T << " " << r.D << " "
+                       << r.DError << " " << (fit ? fit->evaluate(c) : 0.0) << "\n";
+                }
+                os << "\n\n";
+            }
+        }
+        if (std::system("command -v gnuplot > /dev/null 2>&1") != 0)
+        {
+            continue;
+        }
+        const fileName gp(dir/("D_" + tag + ".gp"));
+        {
+            std::ofstream os(gp);
+            os << "set terminal pngcairo size 800,600\n"
+               << "set output '" << (dir/("D_" + tag + ".png")).c_str() << "'\n"
+               << "set logscale xy\nset key top left\n"
+               << "set xlabel 'T [m^2/s^2] (sum of 3 components)'\n"
+               << "set ylabel 'D of the fines [m^2/s]'\n"
+               << "set title 'DEM (Green-Kubo) and fitted law"
+               << (fit ? " " + fit->law.name() : std::string()) << ", x = " << fmt(x) << "'\n"
+               << "plot ";
+            label i = 0;
+            for (const scalar phi : setup.phi)
+            {
+                if (i) os << ", ";
+                os << "'" << dat.c_str() << "' index " << i
+                   << " using 1:2:3 with yerrorbars lc " << i + 1
+                   << " pt 7 title 'DEM phi = " << fmt(phi) << "'";
+                if (fit)
+                {
+                    os << ", '' index " << i << " using 1:4 with lines lc " << i + 1
+                       << " notitle";
+                }
+                ++i;
+            }
+            os << "\n";
+        }
+        const std::string cmd = "gnuplot '" + std::string(gp) + "' > /dev/null 2>&1";
+        if (std::system(cmd.c_str()) == 0)
+        {
+            Info<< "Written " << dir/("D_" + tag + ".png") << nl;
+        }
+    }
+}
+
+
+void writeAtomically(const fileName& path, const std::string& text)
+{
+    const fileName tmp(path + ".tmp");
+    {
+        std::ofstream os(tmp);
+        os << text;
+        if (!os.good())
+        {
+            FatalErrorInFunction
+                << "Cannot write " << tmp << nl << exit(FatalError);
+        }
+    }
+    if (std::rename(tmp.c_str(), path.c_str()) != 0)
+    {
+        FatalErrorInFunction
+            << "Cannot rename " << tmp << " to " << path << nl << exit(FatalError);
+    }
+}
+
+} // End anonymous namespace
+
+
+int main(int argc, char *argv[])
+{
+    argList::addNote
+    (
+        "Calibrate the transport coefficients of a binary mixture with the"
+        " embedded DEM (system/calibrationDict): runs the envelope, stores"
+        " each condition in constant/calibration.h5 (reruns skip stored"
+        " ones), fits laws and writes constant/granularCoefficients"
+    );
+    argList::addBoolOption("noFit", "run and store the DEM conditions only");
+    argList::noParallel();
+
+    #include "setRootCase.H"
+    #include "createTime.H"
+
+    IOdictionary properties
+    (
+        IOobject
+        (
+            "granularProperties",
+            runTime.constant(),
+            runTime,
+            IOobject::MUST_READ,
+            IOobject::NO_WRITE
+        )
+    );
+    IOdictionary dict
+    (
+        IOobject
+        (
+            "calibrationDict",
+            runTime.system(),
+            runTime,
+            IOobject::MUST_READ,
+            IOobject::NO_WRITE
+        )
+    );
+
+    const Setup setup = readSetup(properties, dict);
+
+    std::vector<ConditionSpec> conds;
+    for (const scalar phi : setup.phi)
+    {
+        for (const scalar x : setup.x)
+        {
+            for (const scalar T : setup.T)
+            {
+                for (const label seed : setup.replicas)
+                {
+                    conds.push_back({phi, x, T, seed, conditionName(phi, x, T, seed)});
+                }
+            }
+        }
+    }
+
+    // Check every condition's DEM settings before running anything
+    for (const ConditionSpec& c : conds)
+    {
+        sdf::dem::CellRunSettings s = setup.base;
+        s.volumeFractions = {1 - c.x, c.x};
+        s.solidsFraction = c.phi;
+        s.simulation.targetTemperature = c.T;
+        s.seed = c.seed;
+        s.label = c.name;
+        try
+        {
+            sdf::dem::validateCellRunSettings(s);
+        }
+        catch (const std::exception& err)
+        {
+            FatalIOErrorInFunction(dict)
+                << "The DEM engine refuses condition " << c.name.c_str() << ":"
+                << nl << "    " << err.what() << nl << exit(FatalIOError);
+        }
+    }
+
+    const fileName h5(runTime.path()/runTime.constant()/"calibration.h5");
+    std::map<std::string, std::string> stored = storedConditions(h5);
+
+    Info<< "Calibration of " << setup.species[0].name.c_str() << " (fine, d = "
+        << setup.species[0].diameter << ") / " << setup.species[1].name.c_str()
+        << " (coarse, d = " << setup.species[1].diameter << "): "
+        << label(conds.size()) << " conditions (" << setup.phi.size()
+        << " phi x " << setup.x.size() << " x x " << setup.T.size()
+        << " T x " << setup.replicas.size() << " replicas), store " << h5
+        << nl << endl;
+
+    // Run the conditions
+    const auto start = std::chrono::steady_clock::now();
+    label ran = 0;
+    label toRun = 0;
+    for (const ConditionSpec& c : conds)
+    {
+        if (!stored.count(c.name)) ++toRun;
+    }
+    label k = 0;
+    for (const ConditionSpec& c : conds)
+    {
+        ++k;
+        const std::string where =
+            "condition " + std::to_string(k) + "/" + std::to_string(conds.size())
+          + " (phi " + fmt(c.phi) + " x " + fmt(c.x) + " T " + fmt(c.T)
+          + " seed " + std::to_string(c.seed) + ")";
+        const auto it = stored.find(c.name);
+        if (it != stored.end())
+        {
+            if (it->second != setup.settingsKey)
+            {
+                FatalErrorInFunction
+                    << "Condition " << c.name.c_str() << " in " << h5
+                    << " was run with other DEM settings:" << nl
+                    << "    stored:  " << it->second.c_str() << nl
+                    << "    current: " << setup.settingsKey.c_str() << nl
+                    << "    Move the file away to recalibrate, or restore"
+                    << " the settings." << nl << exit(FatalError);
+            }
+            Info<< "skipping " << where.c_str()
+                << " (already in calibration.h5)" << endl;
+            continue;
+        }
+
+        sdf::dem::CellRunSettings s = setup.base;
+        s.volumeFractions = {1 - c.x, c.x};
+        s.solidsFraction = c.phi;
+        s.simulation.targetTemperature = c.T;
+        s.seed = c.seed;
+        s.label = c.name;
+
+        const auto t0 = std::chrono::steady_clock::now();
+        sdf::dem::CellRunResult result;
+        try
+        {
+            result = sdf::dem::runCell(s);
+        }
+        catch (const std::exception& err)
+        {
+            FatalErrorInFunction
+                << "The DEM engine stopped " << where.c_str() << ":" << nl
+                << "    " << err.what() << nl << exit(FatalError);
+        }
+        try
+        {
+            storeCondition(h5, setup, c, result);
+        }
+        catch (const std::exception& err)
+        {
+            FatalErrorInFunction
+                << "Storing " << where.c_str() << " in " << h5 << " failed:"
+                << nl << "    " << err.what() << nl << exit(FatalError);
+        }
+        stored[c.name] = setup.settingsKey;
+        ++ran;
+        const auto t1 = std::chrono::steady_clock::now();
+        const double dt = std::chrono::duration<double>(t1 - t0).count();
+        const double total = std::chrono::duration<double>(t1 - start).count();
+        const double eta = total/ran*(toRun - ran);
+        Info<< where.c_str() << " done in " << fmt(dt).c_str() << " s, ETA "
+            << fmt(eta).c_str() << " s (T = " << fmt(result.temperature).c_str()
+            << ", D_" << setup.species[0].name.c_str() << " = "
+            << fmt(result.species[0].greenKubo.integral.value).c_str()
+            << " +- " << fmt(result.species[0].greenKubo.integral.standardError).c_str()
+            << " m2/s)" << endl;
+    }
+    Info<< nl << "DEM: " << ran << " conditions run, "
+        << label(conds.size()) - ran << " taken from " << h5 << ", "
+        << fmt(std::chrono::duration<double>
+           (std::chrono::steady_clock::now() - start).count()).c_str()
+        << " s" << nl << endl;
+
+    if (args.found("noFit"))
+    {
+        Info<< "End (no fit: -noFit)" << nl << endl;
+        return 0;
+    }
+
+    // Fits
+    const std::vector<StoredResult> results = readResults(h5, setup, conds);
+    std::vector<sdf::fit::CalibratedCoefficient> calibrated;
+    std::optional<sdf::fit::FitResult> bestD;
+
+    for (const word& coeff : setup.coefficients)
+    {
+        std::vector<sdf::fit::Observation> rows;
+        bool allPositive = true;
+        for (const StoredResult& r : results)
+        {
+            const bool isD = coeff == "D";
+            if (!isD && !r.hasEta)
+            {
+                FatalErrorInFunction
+                    << "Condition " << r.cond.name.c_str() << " in " << h5
+                    << " has no kinetic sieving coefficient eta" << nl
+                    << exit(FatalError);
+            }
+            sdf::fit::Observation o;
+            o.condition.phi = r.cond.phi;
+            o.condition.x = r.cond.x;
+            o.condition.T = r.T;
+            o.condition.d = setup.species[isD ? 0 : 1].diameter;
+            o.value = isD ? r.D : r.eta;
+            o.sigma = isD ? r.DError : r.etaError;
+            allPositive = allPositive && o.value > 0;
+            rows.push_back(o);
+        }
+
+        sdf::fit::FitOptions options;
+        options.maxIterations = 2000;
+        wordList laws;
+        if (coeff == "D")
+        {
+            laws = setup.laws;
+        }
+        else
+        {
+            laws = wordList({"sievingPowerLaw"});
+            if (!allPositive)
+            {
+                options.space = sdf::fit::FitSpace::linear;
+            }
+        }
+
+        Info<< "Fit of " << coeff << " ("
+            << (coeff == "D"
+                ? "diffusivity of " + setup.species[0].name
+                : "kinetic sieving coefficient of " + setup.species[1].name).c_str()
+            << ") to " << label(rows.size()) << " rows, "
+            << (options.space == sdf::fit::FitSpace::linear ? "linear" : "log")
+            << " space:" << nl;
+
+        std::vector<sdf::fit::FitResult> fits;
+        for (const word& lawName : laws)
+        {
+            const sdf::fit::ConstitutiveLaw law =
+                coeff == "D"
+              ? lawFromName(lawName)
+              : sdf::fit::ConstitutiveLaw
+                (
+                    sdf::fit::SievingPowerLaw(int(setup.etaDiameterPower))
+                );
+            try
+            {
+                fits.push_back(sdf::fit::fitLaw(law, rows, options));
+            }
+            catch (const std::exception& err)
+            {
+                FatalErrorInFunction
+                    << "Fit of law '" << lawName << "' to " << coeff
+                    << " refused its data:" << nl << "    " << err.what() << nl
+                    << "    constant/granularCoefficients is not written."
+                    << nl << exit(FatalError);
+            }
+            reportFit(fits.back());
+        }
+
+        try
+        {
+            sdf::fit::ModelSelection sel = sdf::fit::selectModel(fits);
+            Info<< "  model selection by AIC for " << coeff << ":" << nl;
+            for (const auto& rk : sel.ranking)
+            {
+                Info<< "    " << rk.law.c_str() << ": AIC = " << fmt(rk.criterion).c_str()
+                    << ", delta = " << fmt(rk.delta).c_str()
+                    << ", weight = " << fmt(rk.weight).c_str() << nl;
+            }
+            for (const auto& f : sel.failed)
+            {
+                Warning
+                    << "Law '" << f.first.c_str() << "' for " << coeff
+                    << " did not converge and takes no part: "
+                    << f.second.c_str() << endl;
+            }
+            const sdf::fit::FitResult& best = fits[sel.best().index];
+            Info<< "  chosen for " << coeff << ": " << sel.best().law.c_str()
+                << nl << endl;
+            if (coeff == "D") bestD = best;
+            calibrated.push_back({coeff, best, sel});
+        }
+        catch (const std::exception& err)
+        {
+            FatalErrorInFunction
+                << "No law for " << coeff << " could be fitted:" << nl
+                << "    " << err.what() << nl
+                << "    constant/granularCoefficients is not written." << nl
+                << exit(FatalError);
+        }
+    }
+
+    std::ostringstream text;
+    try
+    {
+        sdf::fit::writeOpenFOAMDictionary(text, calibrated);
+    }
+    catch (const std::exception& err)
+    {
+        FatalErrorInFunction
+            << "Writing the coefficients failed: " << err.what() << nl
+            << "    constant/granularCoefficients is not written." << nl
+            << exit(FatalError);
+    }
+    const fileName coeffFile(runTime.path()/runTime.constant()/"granularCoefficients");
+    writeAtomically(coeffFile, text.str());
+    Info<< "Written " << coeffFile << nl;
+
+    if (setup.plot)
+    {
+        plotD
+        (
+            runTime.path()/"postProcessing"/"calibration",
+            results,
+            setup,
+            bestD ? &*bestD : nullptr
+        );
+    }
+
+    Info<< "End" << nl << endl;
+    return 0;
+}
+
+
+// ************************************************************************* //
