@@ -371,7 +371,9 @@ test_calibration_resume()
 test_calibration_bad_input()
 {
     local dir="$workRoot/calibrationBad" kind
-    for kind in unknownCoefficient unknownLaw emptyPhi jammedPhi negativeT xOutside foreignStore
+    local kinds="unknownCoefficient unknownLaw emptyPhi jammedPhi negativeT xOutside textStore foreignHdf5"
+    [ -f "$workRoot/calibration/constant/calibration.h5" ] && kinds="$kinds truncatedStore"
+    for kind in $kinds
     do
         copy_calibration_case "$dir"
         local d="$dir/system/calibrationDict" expect
@@ -382,7 +384,9 @@ test_calibration_bad_input()
             jammedPhi) foamDictionary -entry phi -set "(0.3 0.7)" "$d" > /dev/null; expect="'phi'" ;;
             negativeT) foamDictionary -entry T -set "(0.01 -0.01)" "$d" > /dev/null; expect="'T'" ;;
             xOutside) foamDictionary -entry x -set "(0.2 1.5)" "$d" > /dev/null; expect="'x'" ;;
-            foreignStore) echo "not an HDF5 file" > "$dir/constant/calibration.h5"; expect="calibration.h5" ;;
+            textStore) echo "not an HDF5 file" > "$dir/constant/calibration.h5"; expect="calibration.h5" ;;
+            foreignHdf5) h5mkgrp -p "$dir/constant/calibration.h5" /someone/else > /dev/null; expect="calibration.h5" ;;
+            truncatedStore) head -c 3000 "$workRoot/calibration/constant/calibration.h5" > "$dir/constant/calibration.h5"; expect="calibration.h5" ;;
         esac
         local before=""
         [ -f "$dir/constant/calibration.h5" ] && before=$(md5sum < "$dir/constant/calibration.h5")

@@ -834,7 +834,9 @@ int main(int argc, char *argv[])
             << ", D_" << setup.species[0].name.c_str() << " = "
             << fmt(result.species[0].greenKubo.integral.value).c_str()
             << " +- " << fmt(result.species[0].greenKubo.integral.standardError).c_str()
-            << " m2/s)" << endl;
+            << " m2/s"
+            << (result.species[0].greenKubo.plateauFound ? "" : ", no plateau")
+            << ")" << endl;
     }
     Info<< nl << "DEM: " << ran << " conditions run, "
         << label(conds.size()) - ran << " taken from " << h5 << ", "
