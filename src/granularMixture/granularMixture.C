@@ -8,6 +8,7 @@
 
 #include "granularMixture.H"
 #include "zeroGradientFvPatchFields.H"
+#include "uniformDimensionedFields.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -341,6 +342,30 @@ Foam::tmp<Foam::volScalarField> Foam::granularMixture::phiRegularised() const
 Foam::tmp<Foam::volScalarField> Foam::granularMixture::presence() const
 {
     return min(nTotal_/phiMin_, dimensionedScalar("s", dimless, 1));
+}
+
+
+Foam::vector Foam::granularMixture::gravity() const
+{
+    const uniformDimensionedVectorField g
+    (
+        IOobject
+        (
+            "g",
+            mesh_.time().constant(),
+            mesh_,
+            IOobject::MUST_READ,
+            IOobject::NO_WRITE,
+            false
+        )
+    );
+    if (mag(g.value()) < VSMALL)
+    {
+        FatalErrorInFunction
+            << "constant/g is zero: percolation and the kinematic bulk flow"
+            << " act along gravity" << nl << exit(FatalError);
+    }
+    return g.value();
 }
 
 

@@ -13,7 +13,6 @@
 #include "convectionScheme.H"
 #include "laplacianScheme.H"
 #include "IStringStream.H"
-#include "uniformDimensionedFields.H"
 #include "zeroGradientFvPatchFields.H"
 #include "fixedValueFvPatchFields.H"
 #include "wallFvPatch.H"
@@ -87,19 +86,6 @@ void Foam::bulkFlowModels::kinematic::readDischargeRate()
         const scalar k = bev.getOrDefault<scalar>("k", 1.5);
         const scalar D0 = bev.get<scalar>("D0");
 
-        uniformDimensionedVectorField g
-        (
-            IOobject
-            (
-                "g",
-                mesh.time().constant(),
-                mesh,
-                IOobject::MUST_READ,
-                IOobject::NO_WRITE,
-                false
-            )
-        );
-
         // Mean diameter of the initial mixture, weighted by solids volume
         const volScalarField dMean(mixture_.dMean());
         const scalar solids = gSum(mixture_.nTotal().primitiveField()*mesh.V());
@@ -117,7 +103,7 @@ void Foam::bulkFlowModels::kinematic::readDischargeRate()
                 << nl << exit(FatalIOError);
         }
 
-        Q_ = C*sqrt(mag(g.value()))*pow(D0 - k*d, 2.5);
+        Q_ = C*sqrt(mag(mixture_.gravity()))*pow(D0 - k*d, 2.5);
 
         if (bev.found("hopperHalfAngle"))
         {
@@ -158,25 +144,7 @@ void Foam::bulkFlowModels::kinematic::solveVelocity()
 {
     const fvMesh& mesh = mixture_.mesh();
 
-    uniformDimensionedVectorField g
-    (
-        IOobject
-        (
-            "g",
-            mesh.time().constant(),
-            mesh,
-            IOobject::MUST_READ,
-            IOobject::NO_WRITE,
-            false
-        )
-    );
-    if (mag(g.value()) < VSMALL)
-    {
-        FatalErrorInFunction
-            << "constant/g is zero: the kinematic model needs the direction"
-            << " of gravity" << nl << exit(FatalError);
-    }
-    const vector gHat(g.value()/mag(g.value()));
+    const vector gHat(mixture_.gravity()/mag(mixture_.gravity()));
 
     // Downward speed v: 1 on the outlets (scaled later), no flux of v
     // through walls

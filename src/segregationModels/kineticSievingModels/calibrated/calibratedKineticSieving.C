@@ -8,7 +8,6 @@
 
 #include "calibratedKineticSieving.H"
 #include "addToRunTimeSelectionTable.H"
-#include "fvcSnGrad.H"
 #include "surfaceInterpolate.H"
 
 namespace Foam
@@ -75,17 +74,7 @@ void Foam::kineticSievingModels::calibrated::correct()
         )*mixture_.presence()
     );
 
-    const volScalarField lnU
-    (
-        log
-        (
-            max(mag(bulkFlow_.U()), dimensionedScalar("Umin", dimVelocity, Umin_))
-           /dimensionedScalar("one", dimVelocity, 1)
-        )
-    );
-    etaGradLnUSf_ =
-        fvc::interpolate(eta)*fvc::snGrad(lnU)*mesh.magSf();
-    zeroUncoupledPatches(etaGradLnUSf_);
+    etaGradLnUSf_ = fvc::interpolate(eta)*gradLnUSf(bulkFlow_, Umin_);
 }
 
 

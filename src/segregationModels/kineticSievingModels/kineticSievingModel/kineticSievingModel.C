@@ -7,6 +7,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "kineticSievingModel.H"
+#include "fvcSnGrad.H"
 
 namespace Foam
 {
@@ -25,6 +26,27 @@ Foam::kineticSievingModel::kineticSievingModel
     mixture_(mixture),
     coeffs_(dict.optionalSubDict(type + "Coeffs"))
 {}
+
+
+Foam::tmp<Foam::surfaceScalarField> Foam::kineticSievingModel::gradLnUSf
+(
+    const bulkFlowModel& bulkFlow,
+    const scalar Umin
+)
+{
+    const fvMesh& mesh = bulkFlow.U().mesh();
+    const volScalarField lnU
+    (
+        log
+        (
+            max(mag(bulkFlow.U()), dimensionedScalar("Umin", dimVelocity, Umin))
+           /dimensionedScalar("one", dimVelocity, 1)
+        )
+    );
+    tmp<surfaceScalarField> tgrad(fvc::snGrad(lnU)*mesh.magSf());
+    zeroUncoupledPatches(tgrad.ref());
+    return tgrad;
+}
 
 
 // ************************************************************************* //

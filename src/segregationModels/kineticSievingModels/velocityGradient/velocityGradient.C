@@ -64,13 +64,7 @@ Foam::kineticSievingModels::velocityGradient::velocityGradient
 
 void Foam::kineticSievingModels::velocityGradient::correct()
 {
-    const volScalarField lnU
-    (
-        log(max(mag(bulkFlow_.U()), dimensionedScalar("s", dimVelocity, Umin_))
-           /dimensionedScalar("s", dimVelocity, 1))
-    );
-    gradLnUSf_ = fvc::snGrad(lnU)*mixture_.mesh().magSf();
-    zeroUncoupledPatches(gradLnUSf_);
+    gradLnUSf_ = gradLnUSf(bulkFlow_, Umin_);
 }
 
 

@@ -8,7 +8,6 @@
 
 #include "grayThornton.H"
 #include "addToRunTimeSelectionTable.H"
-#include "uniformDimensionedFields.H"
 
 namespace Foam
 {
@@ -52,25 +51,8 @@ Foam::percolationModels::grayThornton::grayThornton
     }
 
     const fvMesh& mesh = mixture.mesh();
-    uniformDimensionedVectorField g
-    (
-        IOobject
-        (
-            "g",
-            mesh.time().constant(),
-            mesh,
-            IOobject::MUST_READ,
-            IOobject::NO_WRITE,
-            false
-        )
-    );
-    if (mag(g.value()) < VSMALL)
-    {
-        FatalErrorInFunction
-            << "constant/g is zero: percolation acts along gravity" << nl
-            << exit(FatalError);
-    }
-    gSf_ = mesh.Sf() & dimensionedVector("v", dimless, g.value()/mag(g.value()));
+    const vector gHat(mixture.gravity()/mag(mixture.gravity()));
+    gSf_ = mesh.Sf() & dimensionedVector("gHat", dimless, gHat);
     zeroUncoupledPatches(gSf_);
 }
 
