@@ -372,7 +372,7 @@ test_calibration_bad_input()
 {
     local dir="$workRoot/calibrationBad" kind
     local kinds="unknownCoefficient unknownLaw emptyPhi jammedPhi negativeT xOutside textStore foreignHdf5"
-    [ -f "$workRoot/calibration/constant/calibration.h5" ] && kinds="$kinds truncatedStore"
+    [ -f "$workRoot/calibration/constant/calibration.h5" ] && kinds="$kinds truncatedStore settingsChanged"
     for kind in $kinds
     do
         copy_calibration_case "$dir"
@@ -386,6 +386,9 @@ test_calibration_bad_input()
             xOutside) foamDictionary -entry x -set "(0.2 1.5)" "$d" > /dev/null; expect="'x'" ;;
             textStore) echo "not an HDF5 file" > "$dir/constant/calibration.h5"; expect="calibration.h5" ;;
             foreignHdf5) h5mkgrp -p "$dir/constant/calibration.h5" /someone/else > /dev/null; expect="calibration.h5" ;;
+            settingsChanged) cp "$workRoot/calibration/constant/calibration.h5" "$dir/constant/"
+                foamDictionary -entry phi -set "(0.2 0.35 0.5)" "$d" > /dev/null
+                foamDictionary -entry particles -set 300 "$d" > /dev/null; expect="other DEM settings" ;;
             truncatedStore) head -c 3000 "$workRoot/calibration/constant/calibration.h5" > "$dir/constant/calibration.h5"; expect="calibration.h5" ;;
         esac
         local before=""

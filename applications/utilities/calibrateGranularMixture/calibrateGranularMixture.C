@@ -760,6 +760,22 @@ int main(int argc, char *argv[])
         << " T x " << setup.replicas.size() << " replicas), store " << h5
         << nl << endl;
 
+    // A stored condition is reused only if run with the same DEM settings
+    for (const ConditionSpec& c : conds)
+    {
+        const auto it = stored.find(c.name);
+        if (it != stored.end() && it->second != setup.settingsKey)
+        {
+            FatalErrorInFunction
+                << "Condition " << c.name.c_str() << " in " << h5
+                << " was run with other DEM settings:" << nl
+                << "    stored:  " << it->second.c_str() << nl
+                << "    current: " << setup.settingsKey.c_str() << nl
+                << "    Move the file away to recalibrate, or restore"
+                << " the settings." << nl << exit(FatalError);
+        }
+    }
+
     // Run the conditions
     const auto start = std::chrono::steady_clock::now();
     label ran = 0;
@@ -776,19 +792,8 @@ int main(int argc, char *argv[])
             "condition " + std::to_string(k) + "/" + std::to_string(conds.size())
           + " (phi " + fmt(c.phi) + " x " + fmt(c.x) + " T " + fmt(c.T)
           + " seed " + std::to_string(c.seed) + ")";
-        const auto it = stored.find(c.name);
-        if (it != stored.end())
+        if (stored.count(c.name))
         {
-            if (it->second != setup.settingsKey)
-            {
-                FatalErrorInFunction
-                    << "Condition " << c.name.c_str() << " in " << h5
-                    << " was run with other DEM settings:" << nl
-                    << "    stored:  " << it->second.c_str() << nl
-                    << "    current: " << setup.settingsKey.c_str() << nl
-                    << "    Move the file away to recalibrate, or restore"
-                    << " the settings." << nl << exit(FatalError);
-            }
             Info<< "skipping " << where.c_str()
                 << " (already in calibration.h5)" << endl;
             continue;
