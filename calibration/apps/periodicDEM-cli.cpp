@@ -16,7 +16,8 @@
 //   equilibrationTime, maxEquilibrationTime, samplingTime [s], sampleEvery [steps], blocks
 //   progressEvery [steps], output (HDF5 file), label, skin [m]
 //   lammpsData (write the initial state as a LAMMPS data file), throughputOnly (1: no
-//   measurements, only T; for speed comparisons)
+//   measurements, only T; for speed comparisons), checkpointFile, checkpointEvery [steps],
+//   resume (1: continue the sampling from checkpointFile, same settings)
 #include "CellRun.hpp"
 
 #include <fstream>
@@ -46,7 +47,8 @@ const std::set<std::string> validKeys =
     "tangentialStiffnessRatio", "tangentialDampingRatio", "youngsModulus", "poissonRatio",
     "timeStep", "threads", "seed", "equilibrationTime", "samplingTime", "sampleEvery",
     "blocks", "progressEvery", "output", "label", "thermostatTime", "maxOverlapFraction",
-    "lammpsData", "throughputOnly", "skin", "maxEquilibrationTime"
+    "lammpsData", "throughputOnly", "skin", "maxEquilibrationTime",
+    "checkpointFile", "checkpointEvery", "resume"
 };
 
 void addPair(std::map<std::string, std::string>& config, const std::string& line, const std::string& where)
@@ -143,6 +145,9 @@ CellRunSettings settingsFrom(const std::map<std::string, std::string>& c)
     s.label = text(c, "label", "periodicDEM");
     s.lammpsDataFile = text(c, "lammpsData", "");
     s.throughputOnly = number(c, "throughputOnly", 0) != 0;
+    s.checkpointFile = text(c, "checkpointFile", "");
+    s.checkpointEvery = long(number(c, "checkpointEvery", 0));
+    s.resume = number(c, "resume", 0) != 0;
     sim.skin = number(c, "skin", -1);
     return s;
 }

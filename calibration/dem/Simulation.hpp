@@ -181,6 +181,8 @@ public:
     void enableCollisionStatistics(double eMin, double eMax, int nBins);
     const CollisionStatistics& collisionStatistics() const { return collisions_; }
     void resetCollisionStatistics() { collisions_.clearCounts(); }
+    //- Restores counts from a checkpoint (statistics must be enabled with the same bins).
+    void setCollisionStatistics(const CollisionStatistics& c) { collisions_ = c; collisionsEnabled_ = true; }
 
     //- Mass-weighted mean velocity of all particles.
     Eigen::Vector3d meanVelocity() const;

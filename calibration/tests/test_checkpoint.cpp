@@ -64,3 +64,62 @@ TEST(Checkpoint, MissingFileIsReported)
     Simulation sim(species, s, packing.particles, packing.box);
     EXPECT_ANY_THROW(readSimulationCheckpoint("no_such_checkpoint.h5", sim));
 }
+
+#include "CellRun.hpp"
+
+TEST(Checkpoint, CellRunResumedGivesTheUninterruptedResult)
+{
+    CellRunSettings s;
+    s.species = test::binary(2.0);
+    s.volumeFractions = {0.6, 0.4};
+    s.particles = 320;
+    s.solidsFraction = 0.45;
+    s.simulation.mode = CellMode::leesEdwards;
+    s.simulation.shearRate = 80;
+    s.simulation.contact.restitution = 0.7;
+    s.simulation.contact.friction = 0.5;
+    s.simulation.contact.normalStiffness = 2e3;
+    s.simulation.timeStep = 1e-6;
+    s.simulation.threads = 1;
+    s.equilibrationTime = 0.002;
+    s.samplingTime = 0.004;
+    s.sampleEvery = 10;
+    s.blocks = 4;
+    s.seed = 9;
+
+    const CellRunResult reference = runCell(s);
+
+    const std::string path = "cellrun_checkpoint_test.h5";
+    std::remove(path.c_str());
+    CellRunSettings first = s;
+    first.checkpointFile = path;
+    first.checkpointEvery = 700;
+    first.stopAfterSteps = 1500;
+    const CellRunResult partial = runCell(first);
+    EXPECT_TRUE(partial.interrupted);
+
+    CellRunSettings second = s;
+    second.checkpointFile = path;
+    second.checkpointEvery = 700;
+    second.resume = true;
+    const CellRunResult resumed = runCell(second);
+    EXPECT_TRUE(resumed.resumed);
+    EXPECT_FALSE(resumed.interrupted);
+
+    EXPECT_EQ(resumed.temperature, reference.temperature);
+    for (std::size_t k = 0; k < reference.species.size(); ++k)
+    {
+        EXPECT_EQ(resumed.species[k].greenKubo.integral.value, reference.species[k].greenKubo.integral.value);
+        EXPECT_EQ(resumed.species[k].diffusivityMsd.value, reference.species[k].diffusivityMsd.value);
+        EXPECT_EQ(resumed.species[k].temperature, reference.species[k].temperature);
+    }
+    EXPECT_EQ(resumed.meanStress, reference.meanStress);
+    EXPECT_EQ(resumed.collisions.counts, reference.collisions.counts);
+    EXPECT_EQ(resumed.collisions.histogram, reference.collisions.histogram);
+    EXPECT_EQ(resumed.stressIntegrals.crossToProductRatio, reference.stressIntegrals.crossToProductRatio);
+
+    // a checkpoint of other sampling settings is refused
+    CellRunSettings other = second;
+    other.sampleEvery = 20;
+    EXPECT_THROW(runCell(other), std::invalid_argument);
+}

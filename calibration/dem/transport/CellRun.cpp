@@ -1,5 +1,8 @@
 #include "CellRun.hpp"
 #include "InitialState.hpp"
+#ifdef SDF_DEM_HAVE_HDF5
+#include "SimulationCheckpoint.hpp"
+#endif
 
 #include "correlation/MeanSquareDisplacement.hpp"
 #include "correlation/MultipleTauCorrelator.hpp"
@@ -29,6 +32,16 @@ void validateCellRunSettings(const CellRunSettings& s)
     if (!(s.equilibrationTime >= 0)) throw std::invalid_argument("equilibrationTime must be >= 0");
     if (s.sampleEvery < 1) throw std::invalid_argument("sampleEvery must be >= 1");
     if (s.blocks < 2) throw std::invalid_argument("blocks must be >= 2 (errors need two)");
+    if ((s.resume || s.checkpointEvery > 0) && s.checkpointFile.empty())
+    {
+        throw std::invalid_argument("checkpointFile must be given with checkpointEvery or resume");
+    }
+#ifndef SDF_DEM_HAVE_HDF5
+    if (s.resume || s.checkpointEvery > 0)
+    {
+        throw std::invalid_argument("checkpoints need HDF5 (built without sdf_io)");
+    }
+#endif
     if (s.simulation.mode == CellMode::leesEdwards && !(std::abs(s.simulation.shearRate) > 0))
     {
         throw std::invalid_argument("shearRate must be non-zero for a leesEdwards cell");
@@ -101,7 +114,9 @@ CellRunResult runCell(const CellRunSettings& settings)
     const double dt = sim.timeStep();
 
     // --- equilibration: windows of equilibrationTime/4; equilibrated when the mean T of
-    // two consecutive windows differs by < 3 % after the minimum time
+    // two consecutive windows differs by < 3 % after the minimum time (skipped on resume:
+    // the checkpoint holds the sampled state)
+    if (!settings.resume)
     {
         const double maxTime = settings.maxEquilibrationTime > 0
             ? settings.maxEquilibrationTime : 5*settings.equilibrationTime;
@@ -251,9 +266,162 @@ CellRunResult runCell(const CellRunSettings& settings)
             stressCorrelator.closeBlock();
         }
     };
-    sim.run(totalSteps, observe, settings.sampleEvery, settings.progressEvery, settings.label);
-    result.wallSeconds = std::chrono::duration<double>(clock::now() - start).count();
-    result.cpuSeconds = double(std::clock() - cpuStart)/CLOCKS_PER_SEC;
+    long stepsDone = 0;
+    double wallBefore = 0, cpuBefore = 0;
+#ifdef SDF_DEM_HAVE_HDF5
+    const std::string ckFormat = "sdf_dem CellRun 1";
+    auto flatten = [](const correlation::VectorFrames& f)
+    {
+        std::vector<double> v;
+        for (const Eigen::MatrixX3d& m : f)
+        {
+            for (Eigen::Index r = 0; r < m.rows(); ++r)
+            {
+                v.push_back(m(r, 0)); v.push_back(m(r, 1)); v.push_back(m(r, 2));
+            }
+        }
+        return v;
+    };
+    auto writeCheckpointNow = [&]()
+    {
+        io::Checkpoint c;
+        addSimulationState(c, sim);
+        c.strings["cellRun_format"] = ckFormat;
+        c.integers["cellRun_sample"] = sample;
+        c.integers["cellRun_stepsDone"] = stepsDone;
+        c.integers["cellRun_totalSteps"] = totalSteps;
+        c.integers["cellRun_sampleEvery"] = settings.sampleEvery;
+        c.integers["cellRun_equilibrated"] = result.equilibrated ? 1 : 0;
+        c.scalars["cellRun_equilibrationTime"] = result.equilibrationTime;
+        c.scalars["cellRun_wallSeconds"] = wallBefore + std::chrono::duration<double>(clock::now() - start).count();
+        c.scalars["cellRun_cpuSeconds"] = cpuBefore + double(std::clock() - cpuStart)/CLOCKS_PER_SEC;
+        c.vectors["cellRun_temperature"] = temperatureSeries;
+        c.vectors["cellRun_meanStress"] = result.meanStress;
+        for (int s = 0; s < nSpecies; ++s)
+        {
+            const std::string k = std::to_string(s);
+            c.vectors["cellRun_speciesT" + k] = speciesT[s];
+            c.vectors["cellRun_frames" + k] = flatten(frames[s]);
+            const correlation::MultipleTauState st = vacf[s].exportState();
+            c.vectors["cellRun_vacfReals" + k] = st.reals;
+            c.integerVectors["cellRun_vacfIntegers" + k] = st.integers;
+        }
+        const correlation::MultipleTauState ss = stressCorrelator.exportState();
+        c.vectors["cellRun_stressReals"] = ss.reals;
+        c.integerVectors["cellRun_stressIntegers"] = ss.integers;
+        const CollisionStatistics& col = sim.collisionStatistics();
+        c.scalars["cellRun_collisionTime"] = col.elapsedTime;
+        c.vectors["cellRun_collisionEnergy"] = col.energySum;
+        c.integerVectors["cellRun_collisionCounts"].assign(col.counts.begin(), col.counts.end());
+        std::vector<std::int64_t> hist;
+        for (const auto& h : col.histogram) hist.insert(hist.end(), h.begin(), h.end());
+        c.integerVectors["cellRun_collisionHistogram"] = hist;
+        io::writeCheckpoint(settings.checkpointFile, c);
+    };
+    if (settings.resume)
+    {
+        const io::Checkpoint c = io::readCheckpoint(settings.checkpointFile);
+        const std::string& f = settings.checkpointFile;
+        auto needInt = [&](const std::string& k)
+        {
+            if (!c.integers.count(k)) throw std::runtime_error("checkpoint '" + f + "': missing " + k);
+            return c.integers.at(k);
+        };
+        if (!c.strings.count("cellRun_format") || c.strings.at("cellRun_format") != ckFormat)
+        {
+            throw std::runtime_error("checkpoint '" + f + "': not a CellRun checkpoint");
+        }
+        if (needInt("cellRun_totalSteps") != totalSteps || needInt("cellRun_sampleEvery") != settings.sampleEvery)
+        {
+            throw std::invalid_argument
+            (
+                "checkpoint '" + f + "' was written with other samplingTime/sampleEvery settings"
+            );
+        }
+        loadSimulationState(c, sim, f);
+        sample = long(needInt("cellRun_sample"));
+        stepsDone = long(needInt("cellRun_stepsDone"));
+        result.equilibrated = needInt("cellRun_equilibrated") != 0;
+        result.equilibrationTime = c.scalars.at("cellRun_equilibrationTime");
+        wallBefore = c.scalars.at("cellRun_wallSeconds");
+        cpuBefore = c.scalars.at("cellRun_cpuSeconds");
+        temperatureSeries = c.vectors.at("cellRun_temperature");
+        result.meanStress = c.vectors.at("cellRun_meanStress");
+        for (int s = 0; s < nSpecies; ++s)
+        {
+            const std::string k = std::to_string(s);
+            speciesT[s] = c.vectors.at("cellRun_speciesT" + k);
+            const std::vector<double>& fl = c.vectors.at("cellRun_frames" + k);
+            const std::size_t rows = members[s].size();
+            frames[s].clear();
+            if (rows > 0)
+            {
+                for (std::size_t off = 0; off + 3*rows <= fl.size(); off += 3*rows)
+                {
+                    Eigen::MatrixX3d m(rows, 3);
+                    for (std::size_t r = 0; r < rows; ++r)
+                    {
+                        m(r, 0) = fl[off + 3*r]; m(r, 1) = fl[off + 3*r + 1]; m(r, 2) = fl[off + 3*r + 2];
+                    }
+                    frames[s].push_back(m);
+                }
+            }
+            correlation::MultipleTauState st;
+            st.reals = c.vectors.at("cellRun_vacfReals" + k);
+            st.integers = c.integerVectors.at("cellRun_vacfIntegers" + k);
+            vacf[s].importState(st);
+        }
+        correlation::MultipleTauState ss;
+        ss.reals = c.vectors.at("cellRun_stressReals");
+        ss.integers = c.integerVectors.at("cellRun_stressIntegers");
+        stressCorrelator.importState(ss);
+        CollisionStatistics col = sim.collisionStatistics();
+        col.elapsedTime = c.scalars.at("cellRun_collisionTime");
+        col.energySum = c.vectors.at("cellRun_collisionEnergy");
+        const auto& counts = c.integerVectors.at("cellRun_collisionCounts");
+        col.counts.assign(counts.begin(), counts.end());
+        const auto& hist = c.integerVectors.at("cellRun_collisionHistogram");
+        const std::size_t nb = col.histogram.empty() ? 0 : col.histogram[0].size();
+        if (hist.size() != nb*col.histogram.size())
+        {
+            throw std::runtime_error("checkpoint '" + f + "': collision histogram does not fit");
+        }
+        for (std::size_t a = 0; a < col.histogram.size(); ++a)
+        {
+            for (std::size_t b = 0; b < nb; ++b) col.histogram[a][b] = hist[a*nb + b];
+        }
+        sim.setCollisionStatistics(col);
+        result.resumed = true;
+    }
+#endif
+    long chunk = totalSteps;
+    if (settings.checkpointEvery > 0)
+    {
+        chunk = std::max<long>(1, settings.checkpointEvery/settings.sampleEvery)*settings.sampleEvery;
+    }
+    long stopAt = totalSteps;
+    if (settings.stopAfterSteps > 0)
+    {
+        stopAt = std::min(totalSteps, std::max<long>(1, settings.stopAfterSteps/settings.sampleEvery)*settings.sampleEvery);
+    }
+    while (stepsDone < totalSteps)
+    {
+        long n = std::min(chunk, totalSteps - stepsDone);
+        if (stepsDone < stopAt) n = std::min(n, stopAt - stepsDone);
+        sim.run(n, observe, settings.sampleEvery, settings.progressEvery, settings.label);
+        stepsDone += n;
+#ifdef SDF_DEM_HAVE_HDF5
+        if (settings.checkpointEvery > 0 && stepsDone < totalSteps) writeCheckpointNow();
+#endif
+        if (stepsDone == stopAt && stopAt < totalSteps)
+        {
+            result.interrupted = true;
+            result.steps = stepsDone;
+            return result;
+        }
+    }
+    result.wallSeconds = wallBefore + std::chrono::duration<double>(clock::now() - start).count();
+    result.cpuSeconds = cpuBefore + double(std::clock() - cpuStart)/CLOCKS_PER_SEC;
     result.steps = totalSteps;
     result.particleStepsPerSecond = double(totalSteps)*sim.particles().size()/result.wallSeconds;
     for (double& m : result.meanStress) m /= std::max(1L, sample);

@@ -41,6 +41,15 @@ struct CellRunSettings
     //- If set: measurements are skipped, the cell only runs (throughput benchmarks);
     //  T is still sampled every sampleEvery steps.
     bool throughputOnly = false;
+    //- Checkpoints during sampling (HDF5, needs sdf_io): the simulation, the correlators,
+    //  series, MSD frames and collision counts are written to checkpointFile every
+    //  checkpointEvery steps (rounded to whole samples); resume = true continues from it
+    //  (same settings) and gives bit for bit the result of an uninterrupted run.
+    std::string checkpointFile;
+    long checkpointEvery = 0;
+    bool resume = false;
+    //- Testing aid: stop the sampling after this many steps (after a checkpoint).
+    long stopAfterSteps = 0;
 };
 
 //- LAMMPS data file (atom_style sphere: id type diameter density x y z; velocities).
@@ -89,6 +98,8 @@ struct CellRunResult
     std::vector<correlation::Estimate> kineticSieving;   // binary mixtures only
     CollisionStatistics collisions;
     std::vector<int> speciesCounts;
+    bool interrupted = false;              // stopped by stopAfterSteps: results incomplete
+    bool resumed = false;                  // continued from a checkpoint
     long steps = 0;
     double wallSeconds = 0;
     double cpuSeconds = 0;                 // process CPU time of the sampling (all threads)

@@ -37,6 +37,13 @@ const std::vector<std::string>& particleArrayNames()
 
 void writeSimulationCheckpoint(const std::string& path, const Simulation& simulation)
 {
+    io::Checkpoint flat;
+    addSimulationState(flat, simulation);
+    io::writeCheckpoint(path, flat);
+}
+
+void addSimulationState(io::Checkpoint& out, const Simulation& simulation)
+{
     const SimulationState st = simulation.exportState();
     io::Checkpoint c;
     c.scalars["time"] = st.time;
@@ -64,18 +71,20 @@ void writeSimulationCheckpoint(const std::string& path, const Simulation& simula
     c.vectors["pairs/force"] = st.pairForce;
     c.vectors["pairs/nCrossFt"] = st.pairNCrossFt;
     // flat names: io::Checkpoint keys are dataset names, no groups
-    io::Checkpoint flat;
-    flat.scalars = c.scalars;
-    flat.integers = c.integers;
-    flat.strings = c.strings;
-    for (auto& [k, v] : c.vectors) { std::string key = k; for (char& ch : key) if (ch == '/') ch = '_'; flat.vectors[key] = v; }
-    for (auto& [k, v] : c.integerVectors) { std::string key = k; for (char& ch : key) if (ch == '/') ch = '_'; flat.integerVectors[key] = v; }
-    io::writeCheckpoint(path, flat);
+    for (auto& [k, v] : c.scalars) out.scalars[k] = v;
+    for (auto& [k, v] : c.integers) out.integers[k] = v;
+    for (auto& [k, v] : c.strings) out.strings[k] = v;
+    for (auto& [k, v] : c.vectors) { std::string key = k; for (char& ch : key) if (ch == '/') ch = '_'; out.vectors[key] = v; }
+    for (auto& [k, v] : c.integerVectors) { std::string key = k; for (char& ch : key) if (ch == '/') ch = '_'; out.integerVectors[key] = v; }
 }
 
 void readSimulationCheckpoint(const std::string& path, Simulation& simulation)
 {
-    const io::Checkpoint c = io::readCheckpoint(path);
+    loadSimulationState(io::readCheckpoint(path), simulation, path);
+}
+
+void loadSimulationState(const io::Checkpoint& c, Simulation& simulation, const std::string& path)
+{
     auto vec = [&](const std::string& key) -> const std::vector<double>&
     {
         const auto it = c.vectors.find(key);
