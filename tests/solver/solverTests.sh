@@ -325,6 +325,11 @@ test_calibration_run()
     echo "D/law = $law"
     case "$law" in powerLaw|kineticTheoryGroups) ;; *) echo "unexpected law"; return 1 ;; esac
     grep -E "chosen for D|done in" "$dir/log.calibrateGranularMixture" | tail -3
+    [ -s "$dir/postProcessing/calibration/D_x0.2.dat" ] || { echo "no D(T) data for the plot"; return 1; }
+    if command -v gnuplot > /dev/null
+    then
+        [ -s "$dir/postProcessing/calibration/D_x0.2.png" ] || { echo "no D(T) plot"; return 1; }
+    fi
 }
 
 # Resume: a run killed (kill -9) after its first stored condition, rerun,
