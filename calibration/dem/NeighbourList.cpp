@@ -12,7 +12,7 @@
 namespace sdf::dem
 {
 
-void NeighbourList::build(const Particles& p, const PeriodicBox& box, double skin)
+void NeighbourList::build(const Particles& p, const PeriodicBox& box, double skin, int threads)
 {
     const int n = int(p.size());
     double rMax = 0;
@@ -55,7 +55,9 @@ void NeighbourList::build(const Particles& p, const PeriodicBox& box, double ski
 
     int nThreads = 1;
 #ifdef _OPENMP
-    nThreads = omp_get_max_threads();
+    nThreads = threads > 0 ? threads : omp_get_max_threads();
+#else
+    (void)threads;
 #endif
     std::vector<std::vector<int>> firstLocal(nThreads), secondLocal(nThreads);
 

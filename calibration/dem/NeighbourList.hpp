@@ -20,7 +20,8 @@ class NeighbourList
 public:
     //- Builds the list; throws std::invalid_argument when the box is thinner than
     //  2 (2 R_max + skin) in any direction (minimum image would not be unique).
-    void build(const Particles& particles, const PeriodicBox& box, double skin);
+    //  nThreads: OpenMP threads for the build (0: runtime default).
+    void build(const Particles& particles, const PeriodicBox& box, double skin, int nThreads = 0);
 
     std::size_t size() const { return first_.size(); }
     const std::vector<int>& first() const { return first_; }

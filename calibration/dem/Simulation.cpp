@@ -332,7 +332,7 @@ void Simulation::rebuildNeighbourList()
     const std::vector<int> oldSecond = list_.second();
     const std::vector<ContactHistory> oldHistory = history_;
 
-    list_.build(particles_, box_, skin_);
+    list_.build(particles_, box_, skin_, nThreads_);
 
     // carry contact histories over: both lists are sorted by (i, j)
     const std::size_t nPairs = list_.size();
