@@ -580,33 +580,44 @@ void reportFit(const sdf::fit::FitResult& fit)
 }
 
 
-//- Data file and gnuplot PNG of D(fines) vs T per phi, one figure per x
-void plotD
+//- Data file and gnuplot PNG of a coefficient (D of the fines or eta of
+//  the coarse) vs T per phi, one figure per x
+void plotCoefficient
 (
     const fileName& dir,
     const std::vector<StoredResult>& results,
     const Setup& setup,
-    const sdf::fit::FitResult* fit
+    const sdf::fit::FitResult* fit,
+    const bool isD
 )
 {
+    const std::string prefix = isD ? "D" : "eta";
+    const std::string what =
+        isD
+      ? "D of the fines [m^2/s]"
+      : "eta of the coarse (engine units)";
+    const scalar d = setup.species[isD ? 0 : 1].diameter;
     mkDir(dir);
     for (const scalar x : setup.x)
     {
         const std::string tag = "x" + fmt(x);
-        const fileName dat(dir/("D_" + tag + ".dat"));
+        const fileName dat(dir/(prefix + "_" + tag + ".dat"));
         {
             std::ofstream os(dat);
-            os << "# D of the fines vs T at x = " << fmt(x)
-               << "; blocks per phi: T D DError fitted\n";
+            os << "# " << what << " vs T at x = " << fmt(x)
+               << "; blocks per phi: T value error fitted\n";
             for (const scalar phi : setup.phi)
             {
                 os << "# phi " << fmt(phi) << "\n";
                 for (const StoredResult& r : results)
                 {
                     if (r.cond.x != x || r.cond.phi != phi) continue;
-                    sdf::fit::Condition c{phi, x, r.T, setup.species[0].diameter, {}};
-                    os << std::setprecision(10) << r.T << " " << r.D << " "
-                       << r.DError << " " << (fit ? fit->evaluate(c) : 0.0) << "\n";
+                    if (!isD && !r.hasEta) continue;
+                    sdf::fit::Condition c{phi, x, r.T, d, {}};
+                    os << std::setprecision(10) << r.T << " "
+                       << (isD ? r.D : r.eta) << " "
+                       << (isD ? r.DError : r.etaError) << " "
+                       << (fit ? fit->evaluate(c) : 0.0) << "\n";
                 }
                 os << "\n\n";
             }
@@ -615,16 +626,19 @@ void plotD
         {
             continue;
         }
-        const fileName gp(dir/("D_" + tag + ".gp"));
+        const fileName gp(dir/(prefix + "_" + tag + ".gp"));
+        const fileName png(dir/(prefix + "_" + tag + ".png"));
         {
             std::ofstream os(gp);
             os << "set terminal pngcairo size 800,600\n"
-               << "set output '" << (dir/("D_" + tag + ".png")).c_str() << "'\n"
-               << "set logscale xy\nset key top left\n"
+               << "set output '" << png.c_str() << "'\n"
+               << (isD ? "set logscale xy\n" : "set logscale x\n")
+               << "set key top left\n"
                << "set xlabel 'T [m^2/s^2] (sum of 3 components)'\n"
-               << "set ylabel 'D of the fines [m^2/s]'\n"
-               << "set title 'DEM (Green-Kubo) and fitted law"
-               << (fit ? " " + fit->law.name() : std::string()) << ", x = " << fmt(x) << "'\n"
+               << "set ylabel '" << what << "'\n"
+               << "set title 'DEM (Green-Kubo)"
+               << (fit ? " and fitted law " + fit->law.name() : std::string())
+               << ", x = " << fmt(x) << "'\n"
                << "plot ";
             label i = 0;
             for (const scalar phi : setup.phi)
@@ -645,7 +659,7 @@ void plotD
         const std::string cmd = "gnuplot '" + std::string(gp) + "' > /dev/null 2>&1";
         if (std::system(cmd.c_str()) == 0)
         {
-            Info<< "Written " << dir/("D_" + tag + ".png") << nl;
+            Info<< "Written " << png << nl;
         }
     }
 }
@@ -858,7 +872,7 @@ int main(int argc, char *argv[])
     // Fits
     const std::vector<StoredResult> results = readResults(h5, setup, conds);
     std::vector<sdf::fit::CalibratedCoefficient> calibrated;
-    std::optional<sdf::fit::FitResult> bestD;
+    std::optional<sdf::fit::FitResult> bestD, bestEta;
 
     for (const word& coeff : setup.coefficients)
     {
@@ -954,7 +968,7 @@ int main(int argc, char *argv[])
             const sdf::fit::FitResult& best = fits[sel.best().index];
             Info<< "  chosen for " << coeff << ": " << sel.best().law.c_str()
                 << nl << endl;
-            if (coeff == "D") bestD = best;
+            if (coeff == "D") bestD = best; else bestEta = best;
             calibrated.push_back({coeff, best, sel});
         }
         catch (const std::exception& err)
@@ -985,13 +999,17 @@ int main(int argc, char *argv[])
 
     if (setup.plot)
     {
-        plotD
-        (
-            runTime.path()/"postProcessing"/"calibration",
-            results,
-            setup,
-            bestD ? &*bestD : nullptr
-        );
+        const fileName dir(runTime.path()/"postProcessing"/"calibration");
+        plotCoefficient(dir, results, setup, bestD ? &*bestD : nullptr, true);
+        bool haveEta = true;
+        for (const StoredResult& r : results) haveEta = haveEta && r.hasEta;
+        if (haveEta)
+        {
+            plotCoefficient
+            (
+                dir, results, setup, bestEta ? &*bestEta : nullptr, false
+            );
+        }
     }
 
     Info<< "End" << nl << endl;
