@@ -49,6 +49,7 @@ Description
 \*---------------------------------------------------------------------------*/
 
 #include "argList.H"
+#include "sigFpe.H"
 #include "Time.H"
 #include "IOdictionary.H"
 #include "OSspecific.H"
@@ -700,6 +701,11 @@ int main(int argc, char *argv[])
     argList::noParallel();
 
     #include "setRootCase.H"
+
+    // The DEM engine and GSL's least squares handle IEEE infinities and
+    // NaNs themselves (GSL's trust-region steps may overflow and recover);
+    // OpenFOAM's floating-point trap would abort them
+    sigFpe::unset();
     #include "createTime.H"
 
     IOdictionary properties
