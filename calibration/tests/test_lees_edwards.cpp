@@ -125,3 +125,58 @@ TEST(LeesEdwards, ImageVelocityShiftMakesStreamingPairsRelativelyAtRest)
     EXPECT_NEAR(dy, -0.0002, 1e-15);
     EXPECT_NEAR(dvx, box.shearRate*dy, 1e-12);
 }
+
+TEST(LeesEdwards, MillionStepsKeepEveryParticleAndMomentum)
+{
+    // acceptance: no particle lost over 1e6 steps (strain 100), momentum conserved
+    const auto species = test::binary(2.0);
+    const double shearRate = 100.0;
+    Packing packing = test::packedCell(species, {130, 16}, 0.45, 0.0, shearRate, 23);
+    SimulationSettings s;
+    s.contact.restitution = 0.7;
+    s.contact.friction = 0.5;
+    s.contact.normalStiffness = 2e3;
+    s.mode = CellMode::leesEdwards;
+    s.shearRate = shearRate;
+    s.timeStep = 1e-6;
+    s.threads = 1;
+    Simulation sim(species, s, packing.particles, packing.box);
+    const std::size_t n0 = sim.particles().size();
+    auto peculiarMomentum = [](const Simulation& x)
+    {
+        Eigen::Vector3d m = Eigen::Vector3d::Zero();
+        for (std::size_t i = 0; i < x.particles().size(); ++i)
+        {
+            m += x.particles().mass[i]*x.fluctuatingVelocity(int(i));
+        }
+        return m;
+    };
+    double totalMass = 0;
+    for (double m : sim.particles().mass) totalMass += m;
+    const double scale = totalMass*shearRate*sim.box().ly;
+    const Eigen::Vector3d m0 = peculiarMomentum(sim);
+    bool inside = true;
+    double maxError = 0, tSum = 0;
+    long samples = 0;
+    sim.run(1000000, [&](const Simulation& x)
+    {
+        const Particles& p = x.particles();
+        for (std::size_t i = 0; i < p.size(); ++i)
+        {
+            inside = inside && p.x[i] >= 0 && p.x[i] < x.box().lx && p.y[i] >= 0
+                && p.y[i] < x.box().ly && p.z[i] >= 0 && p.z[i] < x.box().lz;
+        }
+        maxError = std::max(maxError, (peculiarMomentum(x) - m0).norm()/scale);
+        tSum += x.temperature();
+        ++samples;
+    }, 10000);
+    EXPECT_EQ(sim.stepCount(), 1000000);
+    EXPECT_EQ(sim.particles().size(), n0);
+    EXPECT_TRUE(inside);
+    EXPECT_LT(maxError, 1e-11);
+    const double dMean = 1.3e-3;
+    const double reduced = tSum/samples/std::pow(shearRate*dMean, 2);
+    std::cout << "1e6 steps: momentum error " << maxError << ", T/(gammaDot d)^2 = " << reduced << "\n";
+    EXPECT_GT(reduced, 0.05);
+    EXPECT_LT(reduced, 20);
+}
