@@ -7,7 +7,8 @@
 //   species          name:diameter:density [name:diameter:density ...]
 //   volumeFractions  solids volume fraction of each species (default: equal)
 //   particles, solidsFraction, mode (nve | thermostatted | leesEdwards)
-//   temperature      target T = <|c|^2> (sum of three components) [m2/s2]
+//   temperature      T = <|c|^2> (sum of three components) [m2/s2]: the thermostat's
+//                    target, or the initial T of an nve cell
 //   shearRate        gammaDot [1/s] (leesEdwards)
 //   model            linearSpringDashpot | hertzMindlin
 //   restitution, friction, normalStiffness, tangentialStiffnessRatio,
