@@ -266,8 +266,19 @@ void Foam::granularMixture::correct()
 
 Foam::tmp<Foam::volScalarField> Foam::granularMixture::c(const label i) const
 {
-    // c = n_i/phi where phi > SMALL, 0 in empty cells
-    return n_[i]*pos(nTotal_ - SMALL)/max(nTotal_, dimensionedScalar("s", dimless, SMALL));
+    // c = n_i/phi where phi > SMALL, 0 in empty cells; bounded to [0, 1]
+    // because round-off leaves n_i ~ -1e-17 next to phi ~ 1e-16 in cells
+    // that have just emptied, where the bare ratio is meaningless
+    return
+        min
+        (
+            max
+            (
+                n_[i]/max(nTotal_, dimensionedScalar("s", dimless, SMALL)),
+                dimensionedScalar("zero", dimless, 0)
+            ),
+            dimensionedScalar("one", dimless, 1)
+        )*pos(nTotal_ - SMALL);
 }
 
 

@@ -149,8 +149,12 @@ Foam::scalar Foam::calibratedLaw::value
 
     if (law_ == "powerLaw")
     {
+        if (!(T > VSMALL))
+        {
+            return 0;
+        }
         return
-            param("A")*pow(1 + x, param("a"))*pow(max(T, scalar(0)), param("m"))
+            param("A")*pow(1 + x, param("a"))*pow(T, param("m"))
            *pow(phi, param("b"));
     }
     if (law_ == "kineticTheoryGroups")
