@@ -434,3 +434,17 @@ test_calibration_fit_failure()
     grep -q "sievingPowerLaw" "$dir/log" || { echo "failure does not name the law"; return 1; }
     [ ! -e "$dir/constant/granularCoefficients" ] || { echo "granularCoefficients written after a failed fit"; return 1; }
 }
+
+# silo2D with the shipped DEM calibration (Allrun -calibrated -quick, short):
+# the calibrated law is used, every field finite and bounded
+test_silo_calibrated()
+{
+    local dir="$workRoot/siloCalibrated"
+    rm -rf "$dir"; mkdir -p "$dir"
+    cp -r "$projectDir/tutorials/silo2D/"* "$dir/"
+    "$dir/Allrun" -calibrated -quick -endTime 2 -writeInterval 1 > "$dir/log.Allrun" 2>&1 \
+        || { tail -20 "$dir/log.Allrun"; return 1; }
+    grep -E "Selecting diffusivity model calibrated" "$dir/log.segregationDegradationFoam" || { echo "calibrated model not used"; return 1; }
+    grep -E "calibrated D: powerLaw" "$dir/log.segregationDegradationFoam" || return 1
+    python3 "$fieldStats" "$dir" bounds --tol 1e-8
+}

@@ -110,9 +110,12 @@ Foam::calibratedLaw::calibratedLaw
     xRange_ = readRange(dict, "xRange");
     TRange_ = readRange(dict, "TRange");
 
-    Info<< "    calibrated " << coefficient << ": " << law_ << " "
-        << params_ << ", outside the envelope: "
-        << outsidePolicyNames[policy_] << nl;
+    Info<< "    calibrated " << coefficient << ": " << law_;
+    for (const word& p : lawParameters[law_])
+    {
+        Info<< ' ' << p << " = " << params_[p];
+    }
+    Info<< ", outside the envelope: " << outsidePolicyNames[policy_] << nl;
 }
 
 
