@@ -251,12 +251,13 @@ sys.exit(0 if ok else 1)
 PY
 }
 
-# periodicDEM bad input: unknown entry, restitution outside (0, 1]: a
+# periodicDEM bad input: unknown entry, restitution outside (0, 1], unknown
+# mode: a
 # FatalIOError naming the entry, no result file
 test_periodic_dem_bad_input()
 {
     local dir="$workRoot/periodicDEMBad" kind
-    for kind in unknownEntry restitution
+    for kind in unknownEntry restitution mode
     do
         rm -rf "$dir"; cp -r "$projectDir/tutorials/periodicDEM/binaryDriven" "$dir"
         rm -rf "$dir/postProcessing"
@@ -264,6 +265,7 @@ test_periodic_dem_bad_input()
         case "$kind" in
             unknownEntry) foamDictionary -entry sampleEvry -set 10 "$d" > /dev/null; expect="sampleEvry" ;;
             restitution) foamDictionary -entry contact/restitution -set 1.5 "$d" > /dev/null; expect="restitution" ;;
+            mode) foamDictionary -entry mode -set shearing "$d" > /dev/null; expect="mode" ;;
         esac
         if periodicDEM -case "$dir" > "$dir/log" 2>&1
         then

@@ -55,7 +55,7 @@ Description
 #include "OSspecific.H"
 #include "clock.H"
 
-#include "CellRun.hpp"
+#include "demDictionary.H"
 #include "io/Hdf5File.hpp"
 #include "fit/FitData.hpp"
 #include "fit/Laws.hpp"
@@ -86,35 +86,11 @@ const scalar phiJamming = 0.64;
 const wordList validEntries
 ({
     "phi", "x", "T", "replicas", "coefficients", "laws", "etaDiameterPower",
-    "particles", "mode", "contact", "timeStep", "equilibrationTime",
-    "maxEquilibrationTime", "samplingTime", "sampleEvery", "blocks",
-    "threads", "thermostatTime", "skin", "maxOverlapFraction", "plot"
-});
-
-const wordList validContactEntries
-({
-    "model", "restitution", "friction", "normalStiffness",
-    "tangentialStiffnessRatio", "tangentialDampingRatio", "youngsModulus",
-    "poissonRatio"
+    "particles", "mode", "plot"
 });
 
 const wordList validCoefficients({"D", "eta"});
 const wordList validDLaws({"powerLaw", "kineticTheoryGroups"});
-
-
-void checkEntries(const dictionary& dict, const wordList& valid)
-{
-    for (const word& key : dict.toc())
-    {
-        if (!valid.found(key))
-        {
-            FatalIOErrorInFunction(dict)
-                << "Unknown entry '" << key << "' in " << dict.name() << nl
-                << "    valid entries: " << valid << nl
-                << exit(FatalIOError);
-        }
-    }
-}
 
 
 std::string fmt(double v)
@@ -196,7 +172,9 @@ struct Setup
 
 Setup readSetup(const dictionary& properties, const dictionary& dict)
 {
-    checkEntries(dict, validEntries);
+    wordList valid(validEntries);
+    valid.append(demDictionary::runControlEntries());
+    demDictionary::checkEntries(dict, valid);
     Setup s;
 
     // Species: exactly two, fine = smaller diameter
@@ -299,51 +277,12 @@ Setup readSetup(const dictionary& properties, const dictionary& dict)
             << " driven cells only (mode thermostatted)" << nl
             << exit(FatalIOError);
     }
-    sdf::dem::SimulationSettings& sim = b.simulation;
-    sim.mode = sdf::dem::cellModeFromName(mode);
-    sim.thermostatTime = dict.getOrDefault<scalar>("thermostatTime", 0);
-    sim.maxOverlapFraction = dict.getOrDefault<scalar>("maxOverlapFraction", 0.1);
-    sim.timeStep = dict.getOrDefault<scalar>("timeStep", 0);
-    sim.threads = dict.getOrDefault<label>("threads", 0);
-    sim.skin = dict.getOrDefault<scalar>("skin", -1);
-
-    const dictionary& contact = dict.subOrEmptyDict("contact");
-    checkEntries(contact, validContactEntries);
-    sdf::dem::ContactSettings& c = sim.contact;
-    try
-    {
-        c.model = sdf::dem::contactModelFromName
-        (
-            contact.getOrDefault<word>("model", "linearSpringDashpot")
-        );
-    }
-    catch (const std::exception& err)
-    {
-        FatalIOErrorInFunction(contact)
-            << "Entry 'contact/model': " << err.what() << nl
-            << exit(FatalIOError);
-    }
-    c.restitution = contact.getOrDefault<scalar>("restitution", c.restitution);
-    c.friction = contact.getOrDefault<scalar>("friction", c.friction);
-    c.normalStiffness =
-        contact.getOrDefault<scalar>("normalStiffness", c.normalStiffness);
-    c.tangentialStiffnessRatio = contact.getOrDefault<scalar>
-    (
-        "tangentialStiffnessRatio", c.tangentialStiffnessRatio
-    );
-    c.tangentialDampingRatio = contact.getOrDefault<scalar>
-    (
-        "tangentialDampingRatio", c.tangentialDampingRatio
-    );
-    c.youngsModulus = contact.getOrDefault<scalar>("youngsModulus", c.youngsModulus);
-    c.poissonRatio = contact.getOrDefault<scalar>("poissonRatio", c.poissonRatio);
-
-    b.equilibrationTime = dict.getOrDefault<scalar>("equilibrationTime", 0);
-    b.maxEquilibrationTime = dict.getOrDefault<scalar>("maxEquilibrationTime", 0);
-    b.samplingTime = dict.get<scalar>("samplingTime");
-    b.sampleEvery = dict.getOrDefault<label>("sampleEvery", 10);
-    b.blocks = dict.getOrDefault<label>("blocks", 8);
+    b.simulation.mode = sdf::dem::cellModeFromName(mode);
+    demDictionary::readRunControls(dict, b);
     b.progressEvery = 0;
+    const sdf::dem::SimulationSettings& sim = b.simulation;
+    const sdf::dem::ContactSettings& c = sim.contact;
+    const dictionary& contact = dict.subOrEmptyDict("contact");
 
     // Fingerprint of the DEM settings (everything but the condition): a
     // stored condition is reused only if it was run with the same settings.

@@ -56,7 +56,7 @@ Description
 #include "IOdictionary.H"
 #include "OSspecific.H"
 
-#include "CellRun.hpp"
+#include "demDictionary.H"
 
 #include <stdexcept>
 
@@ -68,36 +68,8 @@ namespace
 const wordList validEntries
 ({
     "name", "composition", "particles", "solidsFraction", "mode",
-    "temperature", "shearRate", "contact", "timeStep", "equilibrationTime",
-    "maxEquilibrationTime", "samplingTime", "sampleEvery", "blocks", "seed",
-    "threads", "progressEvery", "thermostatTime", "skin", "maxOverlapFraction"
+    "temperature", "shearRate", "seed", "progressEvery"
 });
-
-const wordList validContactEntries
-({
-    "model", "restitution", "friction", "normalStiffness",
-    "tangentialStiffnessRatio", "tangentialDampingRatio", "youngsModulus",
-    "poissonRatio"
-});
-
-
-void checkEntries
-(
-    const dictionary& dict,
-    const wordList& valid
-)
-{
-    for (const word& key : dict.toc())
-    {
-        if (!valid.found(key))
-        {
-            FatalIOErrorInFunction(dict)
-                << "Unknown entry '" << key << "' in " << dict.name() << nl
-                << "    valid entries: " << valid << nl
-                << exit(FatalIOError);
-        }
-    }
-}
 
 
 sdf::dem::CellRunSettings readSettings
@@ -106,7 +78,9 @@ sdf::dem::CellRunSettings readSettings
     const dictionary& dict
 )
 {
-    checkEntries(dict, validEntries);
+    wordList valid(validEntries);
+    valid.append(demDictionary::runControlEntries());
+    demDictionary::checkEntries(dict, valid);
 
     sdf::dem::CellRunSettings s;
 
@@ -141,49 +115,21 @@ sdf::dem::CellRunSettings readSettings
     s.solidsFraction = dict.getOrDefault<scalar>("solidsFraction", 0.3);
 
     sdf::dem::SimulationSettings& sim = s.simulation;
-    sim.mode = sdf::dem::cellModeFromName
-    (
-        dict.getOrDefault<word>("mode", "thermostatted")
-    );
+    try
+    {
+        sim.mode = sdf::dem::cellModeFromName
+        (
+            dict.getOrDefault<word>("mode", "thermostatted")
+        );
+    }
+    catch (const std::exception& err)
+    {
+        FatalIOErrorInFunction(dict)
+            << "Entry 'mode': " << err.what() << nl << exit(FatalIOError);
+    }
     sim.targetTemperature = dict.getOrDefault<scalar>("temperature", 0);
     sim.shearRate = dict.getOrDefault<scalar>("shearRate", 0);
-    sim.thermostatTime = dict.getOrDefault<scalar>("thermostatTime", 0);
-    sim.maxOverlapFraction =
-        dict.getOrDefault<scalar>("maxOverlapFraction", 0.1);
-    sim.timeStep = dict.getOrDefault<scalar>("timeStep", 0);
-    sim.threads = dict.getOrDefault<label>("threads", 0);
-    sim.skin = dict.getOrDefault<scalar>("skin", -1);
-
-    const dictionary& contact = dict.subOrEmptyDict("contact");
-    checkEntries(contact, validContactEntries);
-    sdf::dem::ContactSettings& c = sim.contact;
-    c.model = sdf::dem::contactModelFromName
-    (
-        contact.getOrDefault<word>("model", "linearSpringDashpot")
-    );
-    c.restitution = contact.getOrDefault<scalar>("restitution", c.restitution);
-    c.friction = contact.getOrDefault<scalar>("friction", c.friction);
-    c.normalStiffness =
-        contact.getOrDefault<scalar>("normalStiffness", c.normalStiffness);
-    c.tangentialStiffnessRatio = contact.getOrDefault<scalar>
-    (
-        "tangentialStiffnessRatio", c.tangentialStiffnessRatio
-    );
-    c.tangentialDampingRatio = contact.getOrDefault<scalar>
-    (
-        "tangentialDampingRatio", c.tangentialDampingRatio
-    );
-    c.youngsModulus =
-        contact.getOrDefault<scalar>("youngsModulus", c.youngsModulus);
-    c.poissonRatio =
-        contact.getOrDefault<scalar>("poissonRatio", c.poissonRatio);
-
-    s.equilibrationTime = dict.getOrDefault<scalar>("equilibrationTime", 0);
-    s.maxEquilibrationTime =
-        dict.getOrDefault<scalar>("maxEquilibrationTime", 0);
-    s.samplingTime = dict.get<scalar>("samplingTime");
-    s.sampleEvery = dict.getOrDefault<label>("sampleEvery", 10);
-    s.blocks = dict.getOrDefault<label>("blocks", 8);
+    demDictionary::readRunControls(dict, s);
     s.seed = dict.getOrDefault<label>("seed", 1);
     s.progressEvery = dict.getOrDefault<label>("progressEvery", 10000);
     s.label = dict.getOrDefault<word>("name", "periodicDEM");
