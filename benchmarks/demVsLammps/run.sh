@@ -60,7 +60,7 @@ OMP_NUM_THREADS=1 "$cli" "$out/cell.cfg" threads=1 equilibrationTime=$tEquil \
     maxEquilibrationTime=$tEquil samplingTime=$tRun lammpsData="$out/cell.data" \
     | tee "$out/ours-1thread.log"
 echo "== ours, 2 threads"
-OMP_WAIT_POLICY=passive OMP_NUM_THREADS=2 "$cli" "$out/cell.cfg" threads=2 equilibrationTime=$tEquil \
+OMP_NUM_THREADS=2 "$cli" "$out/cell.cfg" threads=2 equilibrationTime=$tEquil \
     samplingTime=$tRun | tee "$out/ours-2threads.log"
 
 echo "== LAMMPS, 1 process"
