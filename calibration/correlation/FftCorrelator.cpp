@@ -228,14 +228,15 @@ std::vector<Eigen::MatrixX3d> blockVectorAutocorrelations
     std::size_t blockCount
 )
 {
-    std::vector<Eigen::MatrixX3d> blocks;
-    blocks.reserve(blockCount);
-    for (std::size_t b = 0; b < blockCount; ++b)
-    {
-        const IndexRange range = blockRange(frames.size(), blockCount, b);
-        blocks.push_back(vectorAutocorrelation(frames, maxLag, range.begin, range.end));
-    }
-    return blocks;
+    return forEachBlock
+    (
+        frames.size(),
+        blockCount,
+        [&](std::size_t begin, std::size_t end)
+        {
+            return vectorAutocorrelation(frames, maxLag, begin, end);
+        }
+    );
 }
 
 std::vector<std::vector<double>> componentSeries

@@ -38,6 +38,22 @@ struct IndexRange
 };
 IndexRange blockRange(std::size_t n, std::size_t blockCount, std::size_t block);
 
+//- perRange(begin, end) evaluated on each of the blockCount equal contiguous
+//  blocks of n samples (blockRange), in block order
+template<class PerRange>
+auto forEachBlock(std::size_t n, std::size_t blockCount, PerRange perRange)
+    -> std::vector<decltype(perRange(std::size_t(0), std::size_t(0)))>
+{
+    std::vector<decltype(perRange(std::size_t(0), std::size_t(0)))> results;
+    results.reserve(blockCount);
+    for (std::size_t b = 0; b < blockCount; ++b)
+    {
+        const IndexRange range = blockRange(n, blockCount, b);
+        results.push_back(perRange(range.begin, range.end));
+    }
+    return results;
+}
+
 //- Combine estimates from independent replicas: mean of the values and the
 //  standard error from their spread (does not trust the replicas' own errors;
 //  needs >= 2 replicas for a non-zero error).
