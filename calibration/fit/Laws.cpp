@@ -197,4 +197,54 @@ Eigen::VectorXd SievingPowerLaw::initialParameters(const std::vector<Observation
     return start;
 }
 
+// ---------------------------------------------- sievingCompositionPowerLaw
+
+double SievingCompositionPowerLaw::evaluate(const Condition& c, const Eigen::VectorXd& p) const
+{
+    return p(0) * std::pow(c.d, diameterPower) * std::sqrt(perComponentTemperature(c))
+         * std::pow(c.phi, p(1)) * std::pow(c.x, p(2));
+}
+
+Eigen::VectorXd SievingCompositionPowerLaw::gradient
+(
+    const Condition& c,
+    const Eigen::VectorXd& p
+) const
+{
+    const double value = evaluate(c, p);
+    Eigen::VectorXd g(3);
+    g << value / p(0), value * std::log(c.phi), value * std::log(c.x);
+    return g;
+}
+
+Eigen::VectorXd SievingCompositionPowerLaw::initialParameters
+(
+    const std::vector<Observation>& data
+) const
+{
+    const int k = diameterPower;
+    const Eigen::VectorXd solution = logRegression
+    (
+        data, 3,
+        [](const Condition& c, Eigen::RowVectorXd& row)
+        {
+            row << 1.0, std::log(c.phi), std::log(c.x);
+        },
+        [k](const Condition& c)
+        {
+            return std::pow(c.d, k) * std::sqrt(perComponentTemperature(c));
+        }
+    );
+    Eigen::VectorXd start(3);
+    if (solution.size() == 3)
+    {
+        start << std::exp(solution(0)), solution(1), solution(2);
+    }
+    else
+    {
+        start << 1.0, 0.0, 1.0;
+    }
+    return start;
+}
+
 } // namespace sdf::fit

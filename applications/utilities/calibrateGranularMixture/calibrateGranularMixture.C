@@ -29,7 +29,9 @@ Description
     replicas        (1);                // DEM seeds: one run per seed and condition
     coefficients    (D eta);            // which to calibrate: D (fines), eta (coarse)
     laws            (powerLaw kineticTheoryGroups);   // candidate laws for D
-    etaDiameterPower 1;                 // k of sievingPowerLaw (eta)
+    etaLaws         (sievingCompositionPowerLaw sievingPowerLaw); // candidate laws for eta
+    etaDiameterPower 1;                 // k of the eta laws (E d^k ...)
+    fitMaxIterations 2000;              // per law; a law not converged is reported
     particles       200;
     mode            thermostatted;
     contact         { model linearSpringDashpot; restitution 0.9; friction 0.3;
@@ -62,10 +64,15 @@ Description
 #include "fit/LeastSquares.hpp"
 #include "fit/ModelSelection.hpp"
 #include "fit/OpenFOAMDictionary.hpp"
+#include "fit/SievingNormalisation.hpp"
 
+#include <algorithm>
+#include <atomic>
 #include <chrono>
+#include <condition_variable>
 #include <cstdio>
 #include <cstdlib>
+#include <deque>
 #include <fstream>
 #include <iomanip>
 #include <map>
@@ -85,12 +92,14 @@ const scalar phiJamming = 0.64;
 
 const wordList validEntries
 ({
-    "phi", "x", "T", "replicas", "coefficients", "laws", "etaDiameterPower",
-    "particles", "mode", "plot"
+    "phi", "x", "T", "replicas", "coefficients", "laws", "etaLaws",
+    "etaDiameterPower", "fitMaxIterations",
+    "particles", "mode", "plot", "concurrentConditions"
 });
 
 const wordList validCoefficients({"D", "eta"});
 const wordList validDLaws({"powerLaw", "kineticTheoryGroups"});
+const wordList validEtaLaws({"sievingCompositionPowerLaw", "sievingPowerLaw"});
 
 
 std::string fmt(double v)
@@ -163,7 +172,9 @@ struct Setup
     labelList replicas;
     wordList coefficients;
     wordList laws;
+    wordList etaLaws;
     label etaDiameterPower = 1;
+    label fitMaxIterations = 2000;
     bool plot = true;
     sdf::dem::CellRunSettings base;   // everything but the condition
     std::string settingsKey;          // DEM settings a stored result belongs to
@@ -262,7 +273,31 @@ Setup readSetup(const dictionary& properties, const dictionary& dict)
                 << exit(FatalIOError);
         }
     }
+    s.etaLaws = dict.getOrDefault<wordList>("etaLaws", validEtaLaws);
+    if (s.etaLaws.empty())
+    {
+        FatalIOErrorInFunction(dict)
+            << "Entry 'etaLaws' is empty; valid laws for eta: " << validEtaLaws
+            << nl << exit(FatalIOError);
+    }
+    for (const word& l : s.etaLaws)
+    {
+        if (!validEtaLaws.found(l))
+        {
+            FatalIOErrorInFunction(dict)
+                << "Unknown law '" << l << "' in entry 'etaLaws'" << nl
+                << "    valid laws for eta: " << validEtaLaws << nl
+                << exit(FatalIOError);
+        }
+    }
     s.etaDiameterPower = dict.getOrDefault<label>("etaDiameterPower", 1);
+    s.fitMaxIterations = dict.getOrDefault<label>("fitMaxIterations", 2000);
+    if (s.fitMaxIterations < 1)
+    {
+        FatalIOErrorInFunction(dict)
+            << "Entry 'fitMaxIterations' must be at least 1, not "
+            << s.fitMaxIterations << nl << exit(FatalIOError);
+    }
     s.plot = dict.getOrDefault<bool>("plot", true);
 
     // DEM settings
@@ -443,7 +478,7 @@ struct StoredResult
     ConditionSpec cond;
     scalar T = 0;
     scalar D = 0, DError = 0;        // fines
-    scalar eta = 0, etaError = 0;    // coarse
+    scalar eta = 0, etaError = 0;    // coarse, m2/s (converted on reading)
     bool hasEta = false;
 };
 
@@ -474,9 +509,24 @@ std::vector<StoredResult> readResults
             r.DError = fine.readDouble("DError");
             if (coarse.hasAttribute("eta"))
             {
+                // stored in engine units (kg^2 m s^-3); fitted and plotted
+                // in the m2/s of the solver's flux (docs/calibration-fit.md)
+                const sdf::fit::SphereSpecies fineSpecies
+                {
+                    setup.species[0].diameter, setup.species[0].density
+                };
+                const sdf::fit::SphereSpecies coarseSpecies
+                {
+                    setup.species[1].diameter, setup.species[1].density
+                };
+                const double toKinematic =
+                    sdf::fit::kinematicSievingCoefficient
+                    (
+                        1.0, c.phi, c.x, r.T, fineSpecies, coarseSpecies
+                    );
                 r.hasEta = true;
-                r.eta = coarse.readDouble("eta");
-                r.etaError = coarse.readDouble("etaError");
+                r.eta = toKinematic*coarse.readDouble("eta");
+                r.etaError = toKinematic*coarse.readDouble("etaError");
             }
             out.push_back(r);
         }
@@ -535,7 +585,7 @@ void plotCoefficient
     const std::string what =
         isD
       ? "D of the fines [m^2/s]"
-      : "eta of the coarse (engine units)";
+      : "eta of the coarse [m^2/s]";
     const scalar d = setup.species[isD ? 0 : 1].diameter;
     mkDir(dir);
     for (const scalar x : setup.x)
@@ -845,7 +895,7 @@ int main(int argc, char *argv[])
         }
 
         sdf::fit::FitOptions options;
-        options.maxIterations = 2000;
+        options.maxIterations = std::size_t(setup.fitMaxIterations);
         wordList laws;
         if (coeff == "D")
         {
@@ -853,7 +903,7 @@ int main(int argc, char *argv[])
         }
         else
         {
-            laws = wordList({"sievingPowerLaw"});
+            laws = setup.etaLaws;
             if (!allPositive)
             {
                 options.space = sdf::fit::FitSpace::linear;
@@ -874,6 +924,14 @@ int main(int argc, char *argv[])
             const sdf::fit::ConstitutiveLaw law =
                 coeff == "D"
               ? lawFromName(lawName)
+              : lawName == "sievingCompositionPowerLaw"
+              ? sdf::fit::ConstitutiveLaw
+                (
+                    sdf::fit::SievingCompositionPowerLaw
+                    (
+                        int(setup.etaDiameterPower)
+                    )
+                )
               : sdf::fit::ConstitutiveLaw
                 (
                     sdf::fit::SievingPowerLaw(int(setup.etaDiameterPower))

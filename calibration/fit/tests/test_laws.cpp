@@ -80,6 +80,19 @@ TEST(Laws, AnalyticGradientsMatchFiniteDifferences)
     expectGradientMatchesFiniteDifferences(KineticTheoryGroupsLaw{}, kinetic);
     expectGradientMatchesFiniteDifferences(SievingPowerLaw{}, sieving);
     expectGradientMatchesFiniteDifferences(SievingPowerLaw{2}, sieving);
+    expectGradientMatchesFiniteDifferences(SievingCompositionPowerLaw{}, sieving);
+    expectGradientMatchesFiniteDifferences(SievingCompositionPowerLaw{2}, sieving);
+}
+
+TEST(Laws, SievingCompositionPowerLawHandValue)
+{
+    Eigen::VectorXd p(3);
+    p << 0.7, -1.2, 3.3;
+    const Condition c{0.4, 0.2, 0.3, 3e-3, std::nullopt};
+    const double expected = 0.7 * 3e-3 * std::sqrt(0.1) * std::pow(0.4, -1.2) * std::pow(0.2, 3.3);
+    EXPECT_NEAR(SievingCompositionPowerLaw{}.evaluate(c, p) / expected, 1.0, 1e-13);
+    EXPECT_EQ(ConstitutiveLaw(SievingCompositionPowerLaw{}).name(), "sievingCompositionPowerLaw");
+    EXPECT_EQ(SievingCompositionPowerLaw{}.parameterNames()[2], "q");
 }
 
 TEST(Laws, TypeErasedLawKeepsNamesAndCopies)

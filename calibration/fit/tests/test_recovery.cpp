@@ -104,6 +104,15 @@ TEST(Recovery, SievingPowerLaw)
     expectRecovered(SievingPowerLaw{2}, truth, 16);
 }
 
+TEST(Recovery, SievingCompositionPowerLaw)
+{
+    // q = 3.3: the engine's eta of the coarse grows about tenfold from x 0.2 to 0.4
+    Eigen::VectorXd truth(3);
+    truth << 0.05, -1.2, 3.3;
+    expectRecovered(SievingCompositionPowerLaw{}, truth, 18);
+    expectRecovered(SievingCompositionPowerLaw{2}, truth, 19);
+}
+
 TEST(Recovery, AbsoluteSigmaGiveUnscaledErrors)
 {
     Eigen::VectorXd truth(3);

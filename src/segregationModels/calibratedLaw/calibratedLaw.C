@@ -25,7 +25,8 @@ const Foam::HashTable<Foam::wordList> lawParameters
 ({
     {"powerLaw", Foam::wordList({"A", "a", "m", "b"})},
     {"kineticTheoryGroups", Foam::wordList({"C", "alpha"})},
-    {"sievingPowerLaw", Foam::wordList({"E", "p", "beta"})}
+    {"sievingPowerLaw", Foam::wordList({"E", "p", "beta"})},
+    {"sievingCompositionPowerLaw", Foam::wordList({"E", "p", "q"})}
 });
 
 Foam::Tuple2<Foam::scalar, Foam::scalar> readRange
@@ -164,6 +165,13 @@ Foam::scalar Foam::calibratedLaw::value
     {
         const scalar g0 = (1 - phi/2)/pow3(1 - phi);
         return param("C")*d*sqrt(T1)*(1 + param("alpha")*x)/(phi*g0);
+    }
+    if (law_ == "sievingCompositionPowerLaw")
+    {
+        // x^q vanishes with the coarse (x = 0 gives 0 for q > 0)
+        return
+            param("E")*pow(d, diameterPower_)*sqrt(T1)*pow(phi, param("p"))
+           *pow(max(x, scalar(0)), param("q"));
     }
     // sievingPowerLaw
     return
