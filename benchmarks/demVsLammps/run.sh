@@ -11,12 +11,14 @@
 #
 # Needs: build/calibration (cmake -S calibration -B build/calibration ...) and lmp
 # (etc/bootstrap installs lammps). Results go to build/benchmarks/demVsLammps/.
+# Environment: SDF_DEM_CLI (another periodicDEM-cli, e.g. of a second build tree),
+# SDF_DEM_BENCH_OUT (another output folder, so two runs do not share one).
 #------------------------------------------------------------------------------
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)"
 here="$root/benchmarks/demVsLammps"
-out="$root/build/benchmarks/demVsLammps"
-cli="$root/build/calibration/apps/periodicDEM-cli"
+out="${SDF_DEM_BENCH_OUT:-$root/build/benchmarks/demVsLammps}"
+cli="${SDF_DEM_CLI:-$root/build/calibration/apps/periodicDEM-cli}"
 mkdir -p "$out"
 
 N=${1:-3000}
