@@ -76,9 +76,14 @@ Description
 #include <fstream>
 #include <iomanip>
 #include <map>
+#include <mutex>
+#include <optional>
 #include <set>
 #include <sstream>
 #include <stdexcept>
+#include <thread>
+
+#include <omp.h>
 
 using namespace Foam;
 
@@ -674,6 +679,343 @@ void writeAtomically(const fileName& path, const std::string& text)
     }
 }
 
+//- DEM settings of one condition (the envelope point on top of the base)
+sdf::dem::CellRunSettings cellSettings
+(
+    const Setup& setup,
+    const ConditionSpec& c
+)
+{
+    sdf::dem::CellRunSettings s = setup.base;
+    s.volumeFractions = {1 - c.x, c.x};
+    s.solidsFraction = c.phi;
+    s.simulation.targetTemperature = c.T;
+    s.seed = c.seed;
+    s.label = c.name;
+    return s;
+}
+
+
+//- Copies the attributes and sub-groups of one condition group (our
+//  condition groups hold no datasets); doubles and integers are copied
+//  exactly, so a merged condition equals the one its rank stored
+void copyGroup(const sdf::io::Group& from, const sdf::io::Group& to)
+{
+    for (const std::string& name : from.attributeNames())
+    {
+        switch (from.attributeType(name))
+        {
+            case sdf::io::AttributeType::floating:
+                to.setAttribute(name, from.readDouble(name));
+                break;
+            case sdf::io::AttributeType::integer:
+                to.setAttribute(name, from.readInt64(name));
+                break;
+            case sdf::io::AttributeType::string:
+                to.setAttribute(name, from.readString(name));
+                break;
+            default:
+                throw std::runtime_error
+                (
+                    "attribute " + from.path() + "/" + name
+                  + " is of a type a calibration store does not hold"
+                );
+        }
+    }
+    for (const std::string& child : from.childNames())
+    {
+        if (!from.hasGroup(child))
+        {
+            throw std::runtime_error
+            (
+                from.path() + "/" + child
+              + " is a dataset: a calibration store holds none"
+            );
+        }
+        copyGroup(from.openGroup(child), to.createGroup(child));
+    }
+}
+
+
+//- Store of one MPI rank: constant/calibration.processor<N>.h5
+fileName processorStore(const fileName& h5, const label proci)
+{
+    return h5.path()/("calibration.processor" + Foam::name(proci) + ".h5");
+}
+
+
+//- Moves the conditions of every processor store left in the directory of
+//  h5 (by this run or by a parallel run that was killed) into h5, in one
+//  atomic update, then removes the processor stores. A condition already
+//  in h5 is not copied again (a merge killed between the rename of h5 and
+//  the removal of the processor stores is completed by the next run).
+//  Returns the number of conditions moved.
+label mergeProcessorStores(const fileName& h5)
+{
+    const fileName dir(h5.path());
+    std::vector<fileName> stores;
+    for (const fileName& f : readDir(dir, fileName::FILE))
+    {
+        const std::string name(f);
+        if (name.rfind("calibration.processor", 0) != 0)
+        {
+            continue;
+        }
+        if (name.size() > 3 && name.compare(name.size() - 3, 3, ".h5") == 0)
+        {
+            stores.push_back(dir/f);
+        }
+        else if
+        (
+            name.size() > 7
+         && name.compare(name.size() - 7, 7, ".h5.tmp") == 0
+        )
+        {
+            // A rank killed while adding a condition: the copy it was
+            // writing is incomplete, its store holds every finished one.
+            // No rank writes now (start or end of a run).
+            Foam::rm(dir/f);
+        }
+    }
+    std::sort(stores.begin(), stores.end());
+    if (stores.empty())
+    {
+        return 0;
+    }
+
+    const std::map<std::string, std::string> inMain = storedConditions(h5);
+    label moved = 0;
+    try
+    {
+        std::optional<sdf::io::AtomicFile> out;
+        std::set<std::string> copied;
+        for (const fileName& store : stores)
+        {
+            // The same checks as for the main store: a foreign or corrupt
+            // file stops the run with the file named, untouched
+            storedConditions(store);
+            sdf::io::File in = sdf::io::File::openReadOnly(store);
+            const sdf::io::Group root = in.root();
+            if (!root.hasGroup("conditions"))
+            {
+                continue;
+            }
+            const sdf::io::Group conditions = root.openGroup("conditions");
+            for (const std::string& name : conditions.childNames())
+            {
+                if (inMain.count(name) || copied.count(name))
+                {
+                    continue;
+                }
+                if (!out)
+                {
+                    const bool exists = isFile(h5);
+                    out.emplace
+                    (
+                        exists
+                      ? sdf::io::AtomicFile::update(h5)
+                      : sdf::io::AtomicFile::create(h5)
+                    );
+                    if (!exists)
+                    {
+                        for (const char* attr : {"content", "fineSpecies", "coarseSpecies"})
+                        {
+                            out->root().setAttribute(attr, root.readString(attr));
+                        }
+                    }
+                }
+                copyGroup
+                (
+                    conditions.openGroup(name),
+                    out->root().createGroup("conditions/" + name)
+                );
+                copied.insert(name);
+                ++moved;
+            }
+        }
+        if (out)
+        {
+            out->commit();
+        }
+    }
+    catch (const std::exception& err)
+    {
+        FatalErrorInFunction
+            << "Merging the processor stores " << stores << " into " << h5
+            << " failed:" << nl << "    " << err.what() << nl
+            << "    The processor stores are left as they are." << nl
+            << exit(FatalError);
+    }
+    for (const fileName& store : stores)
+    {
+        Foam::rm(store);
+        Foam::rm(store + ".tmp");
+    }
+    Info<< "Merged " << moved << " conditions of " << label(stores.size())
+        << " processor stores into " << h5 << nl << endl;
+    return moved;
+}
+
+
+//- A DEM condition finished by a worker thread, handed to the main thread
+//  (the only one that calls HDF5 and writes to Info)
+struct FinishedCondition
+{
+    label index = -1;                    // in the list of all conditions
+    sdf::dem::CellRunResult result;
+    std::string error;                   // the engine's message if it stopped
+    double seconds = 0;
+};
+
+
+//- Runs the conditions conds[todo[i]] on `workers` threads at once. Each
+//  worker takes the next condition from an atomic counter; the main thread
+//  stores every finished condition in `store` at once (serial HDF5 is not
+//  thread-safe: only this thread calls it) and prints progress with an ETA.
+//  A condition's result does not depend on the number of workers (the
+//  engine is deterministic per seed and thread count). If one condition
+//  fails, no new ones are started, those running are finished and stored,
+//  then the run stops with the first error. Returns the conditions run.
+label runConditions
+(
+    const std::vector<ConditionSpec>& conds,
+    const std::vector<label>& todo,
+    const Setup& setup,
+    const label workers,
+    const fileName& store,
+    OSstream& progress
+)
+{
+    std::mutex mutex;
+    std::condition_variable finishedOne;
+    std::deque<FinishedCondition> finished;
+    std::atomic<std::size_t> next{0};
+    std::atomic<bool> stop{false};
+    label running = workers;
+
+    auto work = [&]()
+    {
+        for (;;)
+        {
+            const std::size_t j = next++;
+            if (stop || j >= todo.size())
+            {
+                break;
+            }
+            FinishedCondition f;
+            f.index = todo[j];
+            const auto t0 = std::chrono::steady_clock::now();
+            try
+            {
+                f.result = sdf::dem::runCell(cellSettings(setup, conds[f.index]));
+            }
+            catch (const std::exception& err)
+            {
+                f.error = err.what();
+            }
+            f.seconds = std::chrono::duration<double>
+                (std::chrono::steady_clock::now() - t0).count();
+            {
+                std::lock_guard<std::mutex> lock(mutex);
+                finished.push_back(std::move(f));
+            }
+            finishedOne.notify_one();
+        }
+        {
+            std::lock_guard<std::mutex> lock(mutex);
+            --running;
+        }
+        finishedOne.notify_one();
+    };
+
+    const auto start = std::chrono::steady_clock::now();
+    std::vector<std::thread> pool;
+    for (label w = 0; w < workers; ++w)
+    {
+        pool.emplace_back(work);
+    }
+
+    label ran = 0;
+    std::string firstError;
+    std::unique_lock<std::mutex> lock(mutex);
+    for (;;)
+    {
+        finishedOne.wait
+        (
+            lock, [&]{ return !finished.empty() || running == 0; }
+        );
+        if (finished.empty())
+        {
+            break;
+        }
+        FinishedCondition f(std::move(finished.front()));
+        finished.pop_front();
+        lock.unlock();
+
+        const ConditionSpec& c = conds[f.index];
+        const std::string where =
+            "condition " + std::to_string(f.index + 1) + "/"
+          + std::to_string(conds.size())
+          + " (phi " + fmt(c.phi) + " x " + fmt(c.x) + " T " + fmt(c.T)
+          + " seed " + std::to_string(c.seed) + ")";
+        if (!f.error.empty())
+        {
+            stop = true;
+            if (firstError.empty())
+            {
+                firstError =
+                    "The DEM engine stopped " + where + ":\n    " + f.error;
+            }
+        }
+        else
+        {
+            try
+            {
+                storeCondition(store, setup, c, f.result);
+                ++ran;
+                const double total = std::chrono::duration<double>
+                    (std::chrono::steady_clock::now() - start).count();
+                const double eta = total/ran*(label(todo.size()) - ran);
+                const sdf::dem::CellRunResult& r = f.result;
+                progress << where.c_str() << " done in " << fmt(f.seconds).c_str()
+                    << " s, ETA " << fmt(eta).c_str()
+                    << " s (T = " << fmt(r.temperature).c_str()
+                    << ", D_" << setup.species[0].name.c_str() << " = "
+                    << fmt(r.species[0].greenKubo.integral.value).c_str()
+                    << " +- "
+                    << fmt(r.species[0].greenKubo.integral.standardError).c_str()
+                    << " m2/s"
+                    << (r.species[0].greenKubo.plateauFound ? "" : ", no plateau")
+                    << ")" << endl;
+            }
+            catch (const std::exception& err)
+            {
+                stop = true;
+                if (firstError.empty())
+                {
+                    firstError =
+                        "Storing " + where + " in " + std::string(store)
+                      + " failed:\n    " + err.what();
+                }
+            }
+        }
+        lock.lock();
+    }
+    lock.unlock();
+    for (std::thread& t : pool)
+    {
+        t.join();
+    }
+    if (!firstError.empty())
+    {
+        FatalErrorInFunction
+            << firstError.c_str() << nl
+            << "    Every condition finished before is stored in " << store
+            << nl << exit(FatalError);
+    }
+    return ran;
+}
+
 } // End anonymous namespace
 
 
@@ -687,7 +1029,15 @@ int main(int argc, char *argv[])
         " ones), fits laws and writes constant/granularCoefficients"
     );
     argList::addBoolOption("noFit", "run and store the DEM conditions only");
-    argList::noParallel();
+    argList::addNote
+    (
+        "Parallel: several conditions run at once on all cores (entry"
+        " concurrentConditions); with -parallel under mpirun the conditions"
+        " are spread over the ranks (no decomposition needed)"
+    );
+    // -parallel spreads DEM conditions over ranks: no mesh is decomposed,
+    // so the case needs no processor directories
+    argList::noCheckProcessorDirectories();
 
     #include "setRootCase.H"
 
@@ -758,7 +1108,19 @@ int main(int argc, char *argv[])
         }
     }
 
-    const fileName h5(runTime.path()/runTime.constant()/"calibration.h5");
+    // The case's own directories (under -parallel runTime.path() is a
+    // processor directory that need not exist)
+    const fileName h5(runTime.globalPath()/runTime.constant()/"calibration.h5");
+    // Conditions a killed parallel run left in processor stores first
+    if (Pstream::master())
+    {
+        mergeProcessorStores(h5);
+    }
+    if (Pstream::parRun())
+    {
+        label synchronised = 0;
+        reduce(synchronised, sumOp<label>());
+    }
     std::map<std::string, std::string> stored = storedConditions(h5);
 
     Info<< "Calibration of " << setup.species[0].name.c_str() << " (fine, d = "
@@ -785,78 +1147,101 @@ int main(int argc, char *argv[])
         }
     }
 
-    // Run the conditions
-    const auto start = std::chrono::steady_clock::now();
-    label ran = 0;
-    label toRun = 0;
-    for (const ConditionSpec& c : conds)
+    // Run the conditions still missing from the store. Without -parallel:
+    // several at once on this machine's cores. With -parallel: spread over
+    // the ranks round-robin; every rank stores its conditions at once in
+    // its own store (calibration.processor<N>.h5), which the master merges
+    // into calibration.h5 at the end (and at the start of any run, so that
+    // nothing a killed parallel run finished is lost).
+    std::vector<label> toRun;
+    for (label i = 0; i < label(conds.size()); ++i)
     {
-        if (!stored.count(c.name)) ++toRun;
-    }
-    label k = 0;
-    for (const ConditionSpec& c : conds)
-    {
-        ++k;
-        const std::string where =
-            "condition " + std::to_string(k) + "/" + std::to_string(conds.size())
-          + " (phi " + fmt(c.phi) + " x " + fmt(c.x) + " T " + fmt(c.T)
-          + " seed " + std::to_string(c.seed) + ")";
+        const ConditionSpec& c = conds[i];
         if (stored.count(c.name))
         {
-            Info<< "skipping " << where.c_str()
-                << " (already in calibration.h5)" << endl;
-            continue;
+            Info<< "skipping condition " << i + 1 << "/" << label(conds.size())
+                << " (phi " << fmt(c.phi).c_str() << " x " << fmt(c.x).c_str()
+                << " T " << fmt(c.T).c_str() << " seed " << c.seed
+                << ") (already in calibration.h5)" << endl;
         }
+        else
+        {
+            toRun.push_back(i);
+        }
+    }
+    std::vector<label> mine;
+    for (std::size_t j = 0; j < toRun.size(); ++j)
+    {
+        if (label(j % Pstream::nProcs()) == Pstream::myProcNo())
+        {
+            mine.push_back(toRun[j]);
+        }
+    }
 
-        sdf::dem::CellRunSettings s = setup.base;
-        s.volumeFractions = {1 - c.x, c.x};
-        s.solidsFraction = c.phi;
-        s.simulation.targetTemperature = c.T;
-        s.seed = c.seed;
-        s.label = c.name;
+    const label threadsPerCell =
+        setup.base.simulation.threads > 0
+      ? label(setup.base.simulation.threads)
+      : label(omp_get_max_threads());
+    const label hardwareThreads =
+        max(label(1), label(std::thread::hardware_concurrency()));
+    label workers = dict.getOrDefault<label>("concurrentConditions", 0);
+    if (workers < 0)
+    {
+        FatalIOErrorInFunction(dict)
+            << "Entry 'concurrentConditions' " << workers << " is negative:"
+            << " give the number of DEM conditions to run at once, or 0 for"
+            << " automatic (hardware threads / threads per cell; 1 per rank"
+            << " with -parallel)" << nl << exit(FatalIOError);
+    }
+    if (workers == 0)
+    {
+        workers =
+            Pstream::parRun()
+          ? 1
+          : max(label(1), hardwareThreads/threadsPerCell);
+    }
+    workers = max(label(1), min(workers, label(mine.size())));
 
-        const auto t0 = std::chrono::steady_clock::now();
-        sdf::dem::CellRunResult result;
-        try
-        {
-            result = sdf::dem::runCell(s);
-        }
-        catch (const std::exception& err)
-        {
-            FatalErrorInFunction
-                << "The DEM engine stopped " << where.c_str() << ":" << nl
-                << "    " << err.what() << nl << exit(FatalError);
-        }
-        try
-        {
-            storeCondition(h5, setup, c, result);
-        }
-        catch (const std::exception& err)
-        {
-            FatalErrorInFunction
-                << "Storing " << where.c_str() << " in " << h5 << " failed:"
-                << nl << "    " << err.what() << nl << exit(FatalError);
-        }
-        stored[c.name] = setup.settingsKey;
-        ++ran;
-        const auto t1 = std::chrono::steady_clock::now();
-        const double dt = std::chrono::duration<double>(t1 - t0).count();
-        const double total = std::chrono::duration<double>(t1 - start).count();
-        const double eta = total/ran*(toRun - ran);
-        Info<< where.c_str() << " done in " << fmt(dt).c_str() << " s, ETA "
-            << fmt(eta).c_str() << " s (T = " << fmt(result.temperature).c_str()
-            << ", D_" << setup.species[0].name.c_str() << " = "
-            << fmt(result.species[0].greenKubo.integral.value).c_str()
-            << " +- " << fmt(result.species[0].greenKubo.integral.standardError).c_str()
-            << " m2/s"
-            << (result.species[0].greenKubo.plateauFound ? "" : ", no plateau")
+    OSstream& progress = Pstream::parRun() ? Pout : Info();
+    if (!mine.empty())
+    {
+        progress
+            << label(mine.size()) << " conditions to run, " << workers
+            << " at once (" << threadsPerCell << " threads per cell, "
+            << hardwareThreads << " hardware threads"
+            << (
+                   Pstream::parRun()
+                 ? ", rank " + std::to_string(Pstream::myProcNo()) + " of "
+                 + std::to_string(Pstream::nProcs())
+                 : std::string()
+               ).c_str()
             << ")" << endl;
+    }
+    const fileName store =
+        Pstream::parRun() ? processorStore(h5, Pstream::myProcNo()) : h5;
+    const auto start = std::chrono::steady_clock::now();
+    label ran = runConditions(conds, mine, setup, workers, store, progress);
+
+    if (Pstream::parRun())
+    {
+        // Every rank has stored its conditions once all arrive here
+        reduce(ran, sumOp<label>());
+        if (Pstream::master())
+        {
+            mergeProcessorStores(h5);
+        }
     }
     Info<< nl << "DEM: " << ran << " conditions run, "
         << label(conds.size()) - ran << " taken from " << h5 << ", "
         << fmt(std::chrono::duration<double>
            (std::chrono::steady_clock::now() - start).count()).c_str()
         << " s" << nl << endl;
+
+    // Only the master fits and writes
+    if (!Pstream::master())
+    {
+        return 0;
+    }
 
     if (args.found("noFit"))
     {
@@ -996,13 +1381,13 @@ int main(int argc, char *argv[])
             << "    constant/granularCoefficients is not written." << nl
             << exit(FatalError);
     }
-    const fileName coeffFile(runTime.path()/runTime.constant()/"granularCoefficients");
+    const fileName coeffFile(runTime.globalPath()/runTime.constant()/"granularCoefficients");
     writeAtomically(coeffFile, text.str());
     Info<< "Written " << coeffFile << nl;
 
     if (setup.plot)
     {
-        const fileName dir(runTime.path()/"postProcessing"/"calibration");
+        const fileName dir(runTime.globalPath()/"postProcessing"/"calibration");
         plotCoefficient(dir, results, setup, bestD ? &*bestD : nullptr, true);
         bool haveEta = true;
         for (const StoredResult& r : results) haveEta = haveEta && r.hasEta;
