@@ -7,17 +7,22 @@
 # for several N and run lengths (strain) against a reference run of the largest N,
 # 10 x the longest strain. Single thread.
 #
-#   benchmarks/demSpeedAccuracy/run.sh ["250 500 1000"] ["5 10 20"] [referenceN]
+#   benchmarks/demSpeedAccuracy/run.sh ["500 1000 2000 4000 8000"] ["5 10 20"] [referenceN]
+#
+# The engine binary is copied first, so a rebuild during the (long) run does not mix
+# two engine versions in one table.
 #------------------------------------------------------------------------------
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)"
 out="$root/build/benchmarks/demSpeedAccuracy"
-cli="$root/build/calibration/apps/periodicDEM-cli"
 cfg="$root/calibration/apps/sheared.cfg"
 mkdir -p "$out"
-Ns=(${1:-250 500 1000})
+cp "$root/build/calibration/apps/periodicDEM-cli" "$out/periodicDEM-cli"
+cli="$out/periodicDEM-cli"
+git -C "$root" rev-parse --short HEAD > "$out/engineCommit"
+Ns=(${1:-500 1000 2000 4000 8000})
 strains=(${2:-5 10 20})
-refN=${3:-1000}
+refN=${3:-8000}
 gd=100
 longest=${strains[-1]}
 
@@ -40,6 +45,7 @@ run $refN $((10*longest)) reference
 read -r Dref Eref Cref <<<"$(parse reference)"
 report="$out/report.txt"
 {
+echo "engine commit $(cat "$out/engineCommit")"
 echo "reference: N = $refN, strain $((10*longest)): D_fine = $Dref +- $Eref m2/s (CPU $Cref s)"
 printf "%-6s %-7s %-12s %-10s %-9s %-8s\n" N strain D_fine stderr "err/ref" "CPU[s]"
 } > "$report"
