@@ -608,6 +608,26 @@ test_calibration_from_case()
         "27 of 27 conditions would run" || return 1
     [ ! -e "$dir/constant/calibration.h5" ] || { echo "-dryRun wrote calibration.h5"; return 1; }
 
+    # the same fields decomposed (processor0: cells 1-2, processor1: cells
+    # 3-5, no time 2 in the case itself): the same envelope
+    local d0="$dir/processor0/2" d1="$dir/processor1/2"
+    mkdir -p "$d0" "$d1"
+    sed 's/5(0.3 0.2 0.01 0.35 0.5)/2(0.3 0.2)/' "$dir/2/n.small" > "$d0/n.small"
+    sed 's/5(0.1 0.3 0.01 0.15 0.2)/2(0.1 0.3)/' "$dir/2/n.large" > "$d0/n.large"
+    sed 's/5(0.004 0.04 10 0.01 0.001)/2(0.004 0.04)/' "$dir/2/T" > "$d0/T"
+    sed 's/5(0.3 0.2 0.01 0.35 0.5)/3(0.01 0.35 0.5)/' "$dir/2/n.small" > "$d1/n.small"
+    sed 's/5(0.1 0.3 0.01 0.15 0.2)/3(0.01 0.15 0.2)/' "$dir/2/n.large" > "$d1/n.large"
+    sed 's/5(0.004 0.04 10 0.01 0.001)/3(10 0.01 0.001)/' "$dir/2/T" > "$d1/T"
+    mv "$dir/2" "$dir/2.serial"
+    log="$dir/log.decomposed"
+    calibrateGranularMixture -case "$dir" -fromCase -dryRun > "$log" 2>&1 || { tail -20 "$log"; return 1; }
+    expect_lines "$log" \
+        "fields at time 2 (processor directories), 4 of 5 cells hold material" \
+        "-> (0.4 0.5 0.6)" "-> (0.25 0.425 0.6)" "-> (0.001 0.006325 0.04)" || return 1
+    echo "decomposed fields: the same envelope"
+    rm -rf "$dir/processor0" "$dir/processor1"
+    mv "$dir/2.serial" "$dir/2"
+
     # named time 1 (uniform fields): one condition, run and stored
     log="$dir/log.time1"
     calibrateGranularMixture -case "$dir" -fromCase 1 -noFit > "$log" 2>&1 || { tail -20 "$log"; return 1; }
