@@ -150,18 +150,23 @@ Eigen::VectorXd KineticTheoryGroupsLaw::initialParameters
     return start;
 }
 
+// ------------------------------------------------------------ sieving laws
+
+double SievingLawBase::kineticScale(const Condition& c) const
+{
+    return std::pow(c.d, diameterPower) * std::sqrt(perComponentTemperature(c));
+}
+
 // --------------------------------------------------------- sievingPowerLaw
 
 double SievingPowerLaw::evaluate(const Condition& c, const Eigen::VectorXd& p) const
 {
-    return p(0) * std::pow(c.d, diameterPower) * std::sqrt(perComponentTemperature(c))
-         * std::pow(c.phi, p(1)) * (1.0 + p(2) * c.x);
+    return p(0) * kineticScale(c) * std::pow(c.phi, p(1)) * (1.0 + p(2) * c.x);
 }
 
 Eigen::VectorXd SievingPowerLaw::gradient(const Condition& c, const Eigen::VectorXd& p) const
 {
-    const double scale = std::pow(c.d, diameterPower) * std::sqrt(perComponentTemperature(c))
-                       * std::pow(c.phi, p(1));
+    const double scale = kineticScale(c) * std::pow(c.phi, p(1));
     const double composition = 1.0 + p(2) * c.x;
     Eigen::VectorXd g(3);
     g << scale * composition,
@@ -172,7 +177,6 @@ Eigen::VectorXd SievingPowerLaw::gradient(const Condition& c, const Eigen::Vecto
 
 Eigen::VectorXd SievingPowerLaw::initialParameters(const std::vector<Observation>& data) const
 {
-    const int k = diameterPower;
     const Eigen::VectorXd solution = logRegression
     (
         data, 2,
@@ -180,10 +184,7 @@ Eigen::VectorXd SievingPowerLaw::initialParameters(const std::vector<Observation
         {
             row << 1.0, std::log(c.phi);
         },
-        [k](const Condition& c)
-        {
-            return std::pow(c.d, k) * std::sqrt(perComponentTemperature(c));
-        }
+        [this](const Condition& c) { return kineticScale(c); }
     );
     Eigen::VectorXd start(3);
     if (solution.size() == 2)
@@ -201,8 +202,7 @@ Eigen::VectorXd SievingPowerLaw::initialParameters(const std::vector<Observation
 
 double SievingCompositionPowerLaw::evaluate(const Condition& c, const Eigen::VectorXd& p) const
 {
-    return p(0) * std::pow(c.d, diameterPower) * std::sqrt(perComponentTemperature(c))
-         * std::pow(c.phi, p(1)) * std::pow(c.x, p(2));
+    return p(0) * kineticScale(c) * std::pow(c.phi, p(1)) * std::pow(c.x, p(2));
 }
 
 Eigen::VectorXd SievingCompositionPowerLaw::gradient
@@ -222,7 +222,6 @@ Eigen::VectorXd SievingCompositionPowerLaw::initialParameters
     const std::vector<Observation>& data
 ) const
 {
-    const int k = diameterPower;
     const Eigen::VectorXd solution = logRegression
     (
         data, 3,
@@ -230,10 +229,7 @@ Eigen::VectorXd SievingCompositionPowerLaw::initialParameters
         {
             row << 1.0, std::log(c.phi), std::log(c.x);
         },
-        [k](const Condition& c)
-        {
-            return std::pow(c.d, k) * std::sqrt(perComponentTemperature(c));
-        }
+        [this](const Condition& c) { return kineticScale(c); }
     );
     Eigen::VectorXd start(3);
     if (solution.size() == 3)

@@ -60,6 +60,23 @@ struct KineticTheoryGroupsLaw
     std::vector<std::pair<std::string, double>> fixedEntries() const { return {}; }
 };
 
+//- What the laws for the kinetic sieving coefficient share: the fixed power k
+//  of the diameter (written to the dictionary, not fitted) and the kinetic
+//  scale d^k sqrt(T1) that makes E dimensionless for k = 1 (eta in m2/s).
+struct SievingLawBase
+{
+    explicit SievingLawBase(int diameterPower) : diameterPower(diameterPower) {}
+
+    std::vector<std::pair<std::string, double>> fixedEntries() const
+    {
+        return {{"diameterPower", double(diameterPower)}};
+    }
+    //- d^k sqrt(T1)
+    double kineticScale(const Condition& c) const;
+
+    int diameterPower;
+};
+
 //- A first law for the kinetic sieving coefficient of the coarse species:
 //    eta = E d^k sqrt(T1) phi^p (1 + beta x),  T1 = T/3,
 //  fitted parameters (E, p, beta), k = diameterPower fixed (not fitted).
@@ -68,9 +85,9 @@ struct KineticTheoryGroupsLaw
 //  E d^2 sqrt(T1), dimensionally consistent only if eta is measured per unit
 //  length (m3/s) or E carries 1/m: choose it to match how the Green-Kubo eta
 //  is normalised. Law name `sievingPowerLaw`; k is written to the dictionary.
-struct SievingPowerLaw
+struct SievingPowerLaw : SievingLawBase
 {
-    explicit SievingPowerLaw(int diameterPower = 1) : diameterPower(diameterPower) {}
+    explicit SievingPowerLaw(int diameterPower = 1) : SievingLawBase(diameterPower) {}
 
     std::string name() const { return "sievingPowerLaw"; }
     std::string formula() const
@@ -82,12 +99,6 @@ struct SievingPowerLaw
     Eigen::VectorXd gradient(const Condition& c, const Eigen::VectorXd& p) const;
     //- beta = 0, (E, p) from a weighted regression of ln(y/(d^k sqrt(T1))) on ln phi.
     Eigen::VectorXd initialParameters(const std::vector<Observation>& data) const;
-    std::vector<std::pair<std::string, double>> fixedEntries() const
-    {
-        return {{"diameterPower", double(diameterPower)}};
-    }
-
-    int diameterPower;
 };
 
 //- Kinetic sieving coefficient of the coarse species with a power of the
@@ -101,9 +112,9 @@ struct SievingPowerLaw
 //  (1 + beta x) cannot follow; x^q can, and vanishes with the coarse as it
 //  should. Linear in log space, so the fit always has a unique optimum. Law name
 //  `sievingCompositionPowerLaw`.
-struct SievingCompositionPowerLaw
+struct SievingCompositionPowerLaw : SievingLawBase
 {
-    explicit SievingCompositionPowerLaw(int diameterPower = 1) : diameterPower(diameterPower) {}
+    explicit SievingCompositionPowerLaw(int diameterPower = 1) : SievingLawBase(diameterPower) {}
 
     std::string name() const { return "sievingCompositionPowerLaw"; }
     std::string formula() const
@@ -115,12 +126,6 @@ struct SievingCompositionPowerLaw
     Eigen::VectorXd gradient(const Condition& c, const Eigen::VectorXd& p) const;
     //- Weighted regression of ln(y/(d^k sqrt(T1))) on (1, ln phi, ln x).
     Eigen::VectorXd initialParameters(const std::vector<Observation>& data) const;
-    std::vector<std::pair<std::string, double>> fixedEntries() const
-    {
-        return {{"diameterPower", double(diameterPower)}};
-    }
-
-    int diameterPower;
 };
 
 } // namespace sdf::fit
