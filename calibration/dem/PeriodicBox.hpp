@@ -51,8 +51,12 @@ struct PeriodicBox
             py += ly; px += offset; pvx += shearRate*ly;
         }
         if (py >= ly || py < 0) { py -= ly*std::floor(py/ly); }  // pathological: far out
-        px -= lx*std::floor(px/lx);
-        pz -= lz*std::floor(pz/lz);
+        // within one period (every step but the pathological): the same result as
+        // p - l floor(p/l) without the division and the floor library call
+        if (px >= lx) { px = px < 2*lx ? px - lx : px - lx*std::floor(px/lx); }
+        else if (px < 0) { px = px >= -lx ? px + lx : px - lx*std::floor(px/lx); }
+        if (pz >= lz) { pz = pz < 2*lz ? pz - lz : pz - lz*std::floor(pz/lz); }
+        else if (pz < 0) { pz = pz >= -lz ? pz + lz : pz - lz*std::floor(pz/lz); }
         // floor of a value just below 0 can give exactly lx
         if (px >= lx) px -= lx;
         if (pz >= lz) pz -= lz;

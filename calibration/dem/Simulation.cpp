@@ -359,6 +359,7 @@ void Simulation::rebuildNeighbourList()
     // the pair loop that follows every rebuild fills the slots of touching pairs
     active_.assign(nPairs, 0);
     for (std::size_t k = 0; k < nPairs; ++k) active_[k] = history_[k].touching ? 1 : 0;
+    partitionWork();
     std::fill(dispX_.begin(), dispX_.end(), 0.0);
     std::fill(dispY_.begin(), dispY_.end(), 0.0);
     std::fill(dispZ_.begin(), dispZ_.end(), 0.0);
@@ -367,7 +368,74 @@ void Simulation::rebuildNeighbourList()
     listValid_ = true;
 }
 
-void Simulation::computeForces(bool checkDisplacements)
+void Simulation::partitionWork()
+{
+    const int n = int(particles_.size());
+    const int nPairs = int(list_.size());
+    const int nBlocks = std::max(1, nThreads_);
+    blockParticle_.assign(nBlocks + 1, n);
+    blockPair_.assign(nBlocks + 1, nPairs);
+    blockParticle_[0] = 0;
+    blockPair_[0] = 0;
+    if (nBlocks > 1 && n > 0)
+    {
+        // Relative costs (measured on the sheared N 3000 cell): a listed pair costs 1,
+        // gathering one incident pair 0.3, integrating one particle 0.5. Block 0 scatters
+        // directly and gathers nothing, so it gets more particles.
+        constexpr double gatherCost = 0.3, particleCost = 0.5;
+        const std::vector<int>& first = list_.first();
+        const std::vector<int>& incident = list_.incidentStart();
+        std::vector<double> asFirst(n, 0.0);
+        for (int k = 0; k < nPairs; ++k) asFirst[first[k]] += 1;
+        auto cost = [&](int i, int block)
+        {
+            const double gather = block > 0 ? gatherCost*(incident[i + 1] - incident[i]) : 0.0;
+            return asFirst[i] + gather + particleCost;
+        };
+        // smallest per-block budget with which nBlocks consecutive blocks cover all
+        // particles (bisection); deterministic: depends on the pair list only
+        auto blocksNeeded = [&](double budget, std::vector<int>* starts)
+        {
+            int block = 0;
+            double used = 0;
+            if (starts) (*starts)[0] = 0;
+            for (int i = 0; i < n; ++i)
+            {
+                const double c = cost(i, block);
+                if (used > 0 && used + c > budget)
+                {
+                    ++block;
+                    used = 0;
+                    if (starts && block < nBlocks) (*starts)[block] = i;
+                }
+                used += cost(i, block);
+            }
+            return block + 1;
+        };
+        double lo = 0, hi = 0;
+        for (int i = 0; i < n; ++i) hi += cost(i, 1);
+        for (int it = 0; it < 60; ++it)
+        {
+            const double mid = 0.5*(lo + hi);
+            if (blocksNeeded(mid, nullptr) <= nBlocks) hi = mid; else lo = mid;
+        }
+        blockParticle_.assign(nBlocks + 1, n);
+        const int used = blocksNeeded(hi, &blockParticle_);
+        for (int b = used; b <= nBlocks; ++b) blockParticle_[b] = n;
+        for (int b = 1; b < nBlocks; ++b)
+        {
+            blockPair_[b] = int
+            (
+                std::lower_bound(first.begin(), first.end(), blockParticle_[b]) - first.begin()
+            );
+        }
+    }
+    blockCounts_.resize(nBlocks);
+    blockEnergy_.resize(nBlocks);
+    blockHist_.resize(nBlocks);
+}
+
+void Simulation::computeForces(bool checkDisplacements, bool halfKick)
 {
     if (!listValid_ || (checkDisplacements && neighbourListExpired())) rebuildNeighbourList();
 
@@ -379,120 +447,186 @@ void Simulation::computeForces(bool checkDisplacements)
     const ContactModel model = law_.model();
     const int nSpecies = int(species_.size());
     const double dt = dt_;
+    const double h = 0.5*dt_;
     const PeriodicBox box = box_;
+    const bool kickHere = halfKick && walls_.empty();
 
     const int nSpeciesPairs = numberOfSpeciesPairs(nSpecies);
     const int nHist = collisionsEnabled_ ? int(collisions_.binEdges.size()) + 1 : 0;
-    std::vector<std::vector<long>> localCounts(nThreads_);
-    std::vector<std::vector<double>> localEnergy(nThreads_);
-    std::vector<std::vector<long>> localHist(nThreads_);
+    const int nBlocks = int(blockParticle_.size()) - 1;
+    const int* blockParticle = blockParticle_.data();
+    const int* blockPair = blockPair_.data();
+    const int* start = list_.incidentStart().data();
+    const int* pairsOf = list_.incidentPairs().data();
 
     double maxOverlap = 0;
 
+    // Force pass. Block b owns particles [P_b, P_b+1) and the pairs whose first particle it
+    // owns; pairs are (i, j)-ordered with i < j, so block b's pairs read particles >= P_b
+    // only. Every particle sums its incident pairs in increasing pair order, starting from
+    // zero, whatever the blocks and threads (bitwise reproducible, thread-count independent):
+    //  - block 0 (all particles on one thread) adds each contact to i and, when j is its own,
+    //    to j directly: its particles' pairs all lie in its range and come in pair order;
+    //  - the other blocks' particles also have pairs of lower blocks, so their sums are
+    //    gathered from the per-pair slots after a barrier.
+    // Slots of touching pairs are always written: stress sampling reads them. A block's
+    // particles are read by no lower block, so each integrates (second half kick) its
+    // particles as soon as their forces are complete.
     #pragma omp parallel num_threads(nThreads_) reduction(max:maxOverlap)
     {
-        int tid = 0;
+        int tid = 0, team = 1;
 #ifdef _OPENMP
         tid = omp_get_thread_num();
+        team = omp_get_num_threads();
 #endif
-        std::vector<long>& counts = localCounts[tid];
-        std::vector<double>& energy = localEnergy[tid];
-        std::vector<long>& hist = localHist[tid];
-        if (collisionsEnabled_)
+        auto kick = [&](int b)
         {
-            counts.assign(nSpeciesPairs, 0);
-            energy.assign(nSpeciesPairs, 0.0);
-            hist.assign(nSpeciesPairs*nHist, 0);
+            if (!kickHere) return;
+            for (int i = blockParticle[b]; i < blockParticle[b + 1]; ++i)
+            {
+                const double im = p.invMass[i], ii = p.invInertia[i];
+                p.vx[i] += h*p.fx[i]*im; p.vy[i] += h*p.fy[i]*im; p.vz[i] += h*p.fz[i]*im;
+                p.wx[i] += h*p.tx[i]*ii; p.wy[i] += h*p.ty[i]*ii; p.wz[i] += h*p.tz[i]*ii;
+            }
+        };
+
+        for (int b = tid; b < nBlocks; b += team)
+        {
+            std::vector<long>& counts = blockCounts_[b];
+            std::vector<double>& energy = blockEnergy_[b];
+            std::vector<long>& hist = blockHist_[b];
+            if (collisionsEnabled_)
+            {
+                counts.assign(nSpeciesPairs, 0);
+                energy.assign(nSpeciesPairs, 0.0);
+                hist.assign(std::size_t(nSpeciesPairs)*nHist, 0);
+            }
+            const bool scatter = b == 0;
+            const int ownEnd = blockParticle[b + 1];
+            if (scatter)
+            {
+                for (int i = 0; i < ownEnd; ++i)
+                {
+                    p.fx[i] = p.fy[i] = p.fz[i] = 0;
+                    p.tx[i] = p.ty[i] = p.tz[i] = 0;   // sum of n x F_t until the end
+                }
+            }
+
+            for (int k = blockPair[b]; k < blockPair[b + 1]; ++k)
+            {
+                const int i = first[k], j = second[k];
+                double dx = p.x[i] - p.x[j], dy = p.y[i] - p.y[j], dz = p.z[i] - p.z[j];
+                double shiftVx = 0;
+                box.minimumImage(dx, dy, dz, shiftVx);
+                const double ri = p.radius[i], rj = p.radius[j];
+                const double reach = ri + rj;
+                if (dx*dx + dy*dy + dz*dz >= reach*reach)
+                {
+                    // not touching (most listed pairs): slots and history are cleared
+                    // once, when a contact ends
+                    if (active_[k])
+                    {
+                        active_[k] = 0;
+                        history_[k].touching = false;
+                        history_[k].ft[0] = history_[k].ft[1] = history_[k].ft[2] = 0;
+                        pfx_[k] = pfy_[k] = pfz_[k] = 0;
+                        pcx_[k] = pcy_[k] = pcz_[k] = 0;
+                    }
+                    continue;
+                }
+                active_[k] = 1;
+                ContactKinematics kin;
+                kin.r[0] = dx; kin.r[1] = dy; kin.r[2] = dz;
+                kin.radiusI = ri; kin.radiusJ = rj;
+                kin.dvHalf[0] = p.vx[i] - p.vx[j] + shiftVx;
+                kin.dvHalf[1] = p.vy[i] - p.vy[j];
+                kin.dvHalf[2] = p.vz[i] - p.vz[j];
+                kin.dvSync[0] = svx_[i] - svx_[j] + shiftVx;
+                kin.dvSync[1] = svy_[i] - svy_[j];
+                kin.dvSync[2] = svz_[i] - svz_[j];
+                kin.wHalfI[0] = p.wx[i]; kin.wHalfI[1] = p.wy[i]; kin.wHalfI[2] = p.wz[i];
+                kin.wHalfJ[0] = p.wx[j]; kin.wHalfJ[1] = p.wy[j]; kin.wHalfJ[2] = p.wz[j];
+                kin.wSyncI[0] = swx_[i]; kin.wSyncI[1] = swy_[i]; kin.wSyncI[2] = swz_[i];
+                kin.wSyncJ[0] = swx_[j]; kin.wSyncJ[1] = swy_[j]; kin.wSyncJ[2] = swz_[j];
+
+                const int si = p.species[i], sj = p.species[j];
+                const PairCoefficients& coeffs = law_.pair(si, sj);
+                const ContactResult res = evaluateContact(model, coeffs, kin, history_[k], dt);
+
+                pfx_[k] = res.force[0]; pfy_[k] = res.force[1]; pfz_[k] = res.force[2];
+                pcx_[k] = res.nCrossFt[0]; pcy_[k] = res.nCrossFt[1]; pcz_[k] = res.nCrossFt[2];
+                if (scatter)
+                {
+                    p.fx[i] += res.force[0]; p.fy[i] += res.force[1]; p.fz[i] += res.force[2];
+                    p.tx[i] += res.nCrossFt[0]; p.ty[i] += res.nCrossFt[1]; p.tz[i] += res.nCrossFt[2];
+                    if (j < ownEnd)
+                    {
+                        p.fx[j] -= res.force[0]; p.fy[j] -= res.force[1]; p.fz[j] -= res.force[2];
+                        p.tx[j] += res.nCrossFt[0]; p.ty[j] += res.nCrossFt[1]; p.tz[j] += res.nCrossFt[2];
+                    }
+                }
+
+                const double frac = res.overlap/(2*std::min(ri, rj));
+                if (frac > maxOverlap) maxOverlap = frac;
+
+                if (collisionsEnabled_ && res.newContact)
+                {
+                    const int sp = speciesPairIndex(si, sj, nSpecies);
+                    const double e = 0.5*coeffs.effectiveMass*res.normalVelocity*res.normalVelocity;
+                    ++counts[sp];
+                    energy[sp] += e;
+                    const std::vector<double>& edges = collisions_.binEdges;
+                    int bin;
+                    if (e < edges.front()) bin = 0;
+                    else if (e >= edges.back()) bin = nHist - 1;
+                    else bin = int(std::upper_bound(edges.begin(), edges.end(), e) - edges.begin());
+                    ++hist[sp*nHist + bin];
+                }
+            }
+
+            if (scatter)
+            {
+                for (int i = 0; i < ownEnd; ++i)
+                {
+                    const double r = p.radius[i];
+                    p.tx[i] = -r*p.tx[i]; p.ty[i] = -r*p.ty[i]; p.tz[i] = -r*p.tz[i];
+                }
+                kick(0);
+            }
         }
 
-        #pragma omp for schedule(static)
-        for (int k = 0; k < nPairs; ++k)
+        if (nBlocks > 1)
         {
-            const int i = first[k], j = second[k];
-            ContactKinematics kin;
-            double dx = p.x[i] - p.x[j], dy = p.y[i] - p.y[j], dz = p.z[i] - p.z[j];
-            double shiftVx = 0;
-            box.minimumImage(dx, dy, dz, shiftVx);
-            kin.r[0] = dx; kin.r[1] = dy; kin.r[2] = dz;
-            const double ri = p.radius[i], rj = p.radius[j];
-            const double reach = ri + rj;
-            if (dx*dx + dy*dy + dz*dz >= reach*reach)
-            {
-                // not touching: cheap exit; slots and history are cleared once, when a
-                // contact ends
-                if (active_[k])
-                {
-                    active_[k] = 0;
-                    history_[k].touching = false;
-                    history_[k].ft[0] = history_[k].ft[1] = history_[k].ft[2] = 0;
-                    pfx_[k] = pfy_[k] = pfz_[k] = 0;
-                    pcx_[k] = pcy_[k] = pcz_[k] = 0;
-                }
-                continue;
-            }
-            active_[k] = 1;
-            kin.radiusI = ri; kin.radiusJ = rj;
-            kin.dvHalf[0] = p.vx[i] - p.vx[j] + shiftVx;
-            kin.dvHalf[1] = p.vy[i] - p.vy[j];
-            kin.dvHalf[2] = p.vz[i] - p.vz[j];
-            kin.dvSync[0] = svx_[i] - svx_[j] + shiftVx;
-            kin.dvSync[1] = svy_[i] - svy_[j];
-            kin.dvSync[2] = svz_[i] - svz_[j];
-            kin.wHalfI[0] = p.wx[i]; kin.wHalfI[1] = p.wy[i]; kin.wHalfI[2] = p.wz[i];
-            kin.wHalfJ[0] = p.wx[j]; kin.wHalfJ[1] = p.wy[j]; kin.wHalfJ[2] = p.wz[j];
-            kin.wSyncI[0] = swx_[i]; kin.wSyncI[1] = swy_[i]; kin.wSyncI[2] = swz_[i];
-            kin.wSyncJ[0] = swx_[j]; kin.wSyncJ[1] = swy_[j]; kin.wSyncJ[2] = swz_[j];
-
-            const int si = p.species[i], sj = p.species[j];
-            const PairCoefficients& coeffs = law_.pair(si, sj);
-            const ContactResult res = evaluateContact(model, coeffs, kin, history_[k], dt);
-
-            pfx_[k] = res.force[0]; pfy_[k] = res.force[1]; pfz_[k] = res.force[2];
-            pcx_[k] = res.nCrossFt[0]; pcy_[k] = res.nCrossFt[1]; pcz_[k] = res.nCrossFt[2];
-
-            const double frac = res.overlap/(2*std::min(ri, rj));
-            if (frac > maxOverlap) maxOverlap = frac;
-
-            if (collisionsEnabled_ && res.newContact)
-            {
-                const int sp = speciesPairIndex(si, sj, nSpecies);
-                const double e = 0.5*coeffs.effectiveMass*res.normalVelocity*res.normalVelocity;
-                ++counts[sp];
-                energy[sp] += e;
-                const std::vector<double>& edges = collisions_.binEdges;
-                int bin;
-                if (e < edges.front()) bin = 0;
-                else if (e >= edges.back()) bin = nHist - 1;
-                else bin = int(std::upper_bound(edges.begin(), edges.end(), e) - edges.begin());
-                ++hist[sp*nHist + bin];
-            }
+            #pragma omp barrier
         }
 
-        // gather per particle in increasing pair order: deterministic sums
-        const int* start = list_.incidentStart().data();
-        const int* pairsOf = list_.incidentPairs().data();
-        #pragma omp for schedule(static)
-        for (int i = 0; i < n; ++i)
+        // gather per particle in increasing pair order (blocks > 0)
+        for (int b = tid; b < nBlocks; b += team)
         {
-            double fx = 0, fy = 0, fz = 0, cx = 0, cy = 0, cz = 0;
-            for (int m = start[i]; m < start[i + 1]; ++m)
+            if (b == 0) continue;
+            for (int i = blockParticle[b]; i < blockParticle[b + 1]; ++i)
             {
-                const int code = pairsOf[m];
-                const int k = code >= 0 ? code : -(code + 1);
-                if (!active_[k]) continue;
-                if (code >= 0)
+                double fx = 0, fy = 0, fz = 0, cx = 0, cy = 0, cz = 0;
+                for (int m = start[i]; m < start[i + 1]; ++m)
                 {
-                    fx += pfx_[k]; fy += pfy_[k]; fz += pfz_[k];
+                    const int code = pairsOf[m];
+                    const int k = code >= 0 ? code : -(code + 1);
+                    if (!active_[k]) continue;
+                    if (code >= 0)
+                    {
+                        fx += pfx_[k]; fy += pfy_[k]; fz += pfz_[k];
+                    }
+                    else
+                    {
+                        fx -= pfx_[k]; fy -= pfy_[k]; fz -= pfz_[k];
+                    }
+                    cx += pcx_[k]; cy += pcy_[k]; cz += pcz_[k];
                 }
-                else
-                {
-                    fx -= pfx_[k]; fy -= pfy_[k]; fz -= pfz_[k];
-                }
-                cx += pcx_[k]; cy += pcy_[k]; cz += pcz_[k];
+                const double r = p.radius[i];
+                p.fx[i] = fx; p.fy[i] = fy; p.fz[i] = fz;
+                p.tx[i] = -r*cx; p.ty[i] = -r*cy; p.tz[i] = -r*cz;
             }
-            const double r = p.radius[i];
-            p.fx[i] = fx; p.fy[i] = fy; p.fz[i] = fz;
-            p.tx[i] = -r*cx; p.ty[i] = -r*cy; p.tz[i] = -r*cz;
+            kick(b);
         }
     }
 
@@ -530,18 +664,28 @@ void Simulation::computeForces(bool checkDisplacements)
         }
     }
 
+    if (halfKick && !kickHere)
+    {
+        for (int i = 0; i < n; ++i)
+        {
+            const double im = p.invMass[i], ii = p.invInertia[i];
+            p.vx[i] += h*p.fx[i]*im; p.vy[i] += h*p.fy[i]*im; p.vz[i] += h*p.fz[i]*im;
+            p.wx[i] += h*p.tx[i]*ii; p.wy[i] += h*p.ty[i]*ii; p.wz[i] += h*p.tz[i]*ii;
+        }
+    }
+
     if (collisionsEnabled_)
     {
-        for (int t = 0; t < nThreads_; ++t)
+        // block order: reproducible for a given thread count
+        for (int b = 0; b < nBlocks; ++b)
         {
-            if (localCounts[t].empty()) continue;
             for (int sp = 0; sp < nSpeciesPairs; ++sp)
             {
-                collisions_.counts[sp] += localCounts[t][sp];
-                collisions_.energySum[sp] += localEnergy[t][sp];
-                for (int b = 0; b < nHist; ++b)
+                collisions_.counts[sp] += blockCounts_[b][sp];
+                collisions_.energySum[sp] += blockEnergy_[b][sp];
+                for (int bin = 0; bin < nHist; ++bin)
                 {
-                    collisions_.histogram[sp][b] += localHist[t][sp*nHist + b];
+                    collisions_.histogram[sp][bin] += blockHist_[b][sp*nHist + bin];
                 }
             }
         }
@@ -627,15 +771,8 @@ void Simulation::step()
             listValid_ = false;
         }
     }
-    computeForces(false);
-
-    #pragma omp parallel for schedule(static) num_threads(nThreads_)
-    for (int i = 0; i < n; ++i)
-    {
-        const double im = p.invMass[i], ii = p.invInertia[i];
-        p.vx[i] += h*p.fx[i]*im; p.vy[i] += h*p.fy[i]*im; p.vz[i] += h*p.fz[i]*im;
-        p.wx[i] += h*p.tx[i]*ii; p.wy[i] += h*p.ty[i]*ii; p.wz[i] += h*p.tz[i]*ii;
-    }
+    // forces F^{n+1} and the second half kick
+    computeForces(false, true);
 
     if (settings_.mode == CellMode::thermostatted) applyThermostat();
 

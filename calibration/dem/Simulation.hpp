@@ -189,9 +189,13 @@ public:
 
 private:
     //- checkDisplacements: test the list's validity from the displacements (step() has
-    //  done that already in its drift loop)
-    void computeForces(bool checkDisplacements = true);
+    //  done that already in its drift loop); halfKick: finish the step with the second
+    //  half kick v += dt/2 F/m (fused into the force pass, particle by particle)
+    void computeForces(bool checkDisplacements = true, bool halfKick = false);
     void rebuildNeighbourList();
+    //- Splits particles (and their pairs as first particle) into one contiguous block per
+    //  thread for the force pass (see computeForces).
+    void partitionWork();
     bool neighbourListExpired() const;
     void applyThermostat();
     void checkEnergy() const;
@@ -214,6 +218,12 @@ private:
     std::vector<ContactHistory> history_;
     std::vector<double> pfx_, pfy_, pfz_, pcx_, pcy_, pcz_;   // per-pair force on i, n x F_t
     std::vector<unsigned char> active_;   // per pair: force slots hold a contact (else zero)
+    // force-pass blocks: block b owns particles [blockParticle_[b], blockParticle_[b+1]) and
+    // the pairs [blockPair_[b], blockPair_[b+1]) whose first particle it owns
+    std::vector<int> blockParticle_, blockPair_;
+    // per block: collision counts, energies, histogram (merged in block order)
+    std::vector<std::vector<long>> blockCounts_, blockHist_;
+    std::vector<std::vector<double>> blockEnergy_;
     std::vector<std::vector<ContactHistory>> wallHistory_;    // per wall, per particle
 
     // synchronised velocity estimates v^{n+1/2} + dt/2 a^n
