@@ -667,6 +667,29 @@ test_calibration_from_case()
     grep -q "done in" "$log" && { echo "DEM ran"; return 1; }
     [ ! -e "$dir/constant/calibration.h5" ] || { echo "calibration.h5 written"; return 1; }
 
+    # bad entries of the new options: FatalIOError naming the entry, no DEM run
+    local kind expect
+    for kind in points minTRatio fromCaseEntry concurrent
+    do
+        fresh_from_case
+        case "$kind" in
+            points) foamDictionary -entry fromCase/points -set 0 "$dir/system/calibrationDict" > /dev/null; expect="'fromCase/points'" ;;
+            minTRatio) foamDictionary -entry fromCase/minTRatio -set 2 "$dir/system/calibrationDict" > /dev/null; expect="'fromCase/minTRatio'" ;;
+            fromCaseEntry) foamDictionary -entry fromCase/pionts -set 3 "$dir/system/calibrationDict" > /dev/null; expect="pionts" ;;
+            concurrent) foamDictionary -entry concurrentConditions -set -1 "$dir/system/calibrationDict" > /dev/null; expect="'concurrentConditions'" ;;
+        esac
+        log="$dir/log.bad-$kind"
+        if calibrateGranularMixture -case "$dir" -fromCase 1 > "$log" 2>&1
+        then
+            echo "$kind accepted"; return 1
+        fi
+        echo "$kind: $(grep -A2 "FOAM FATAL" "$log" | sed -n 2p)"
+        grep -q "FOAM FATAL IO ERROR" "$log" || { echo "no FatalIOError"; tail -5 "$log"; return 1; }
+        grep -qF -- "$expect" "$log" || { echo "message lacks $expect"; return 1; }
+        grep -q "done in" "$log" && { echo "DEM ran"; return 1; }
+        [ ! -e "$dir/constant/calibration.h5" ] || { echo "calibration.h5 written"; return 1; }
+    done
+
     # T missing from the case but given in calibrationDict: that list is used
     fresh_from_case
     rm "$dir/2/T"

@@ -43,7 +43,17 @@ Description
     blocks          8;
     threads         1;
     plot            true;               // gnuplot PNGs in postProcessing/calibration
+    concurrentConditions 0;             // conditions at once; 0: cores / threads
+    fromCase        { points 3; minTRatio 1e-3; }   // -fromCase only
     \endverbatim
+    Several conditions run at once on worker threads (only the main thread
+    calls HDF5); under mpirun with -parallel the conditions are dealt to the
+    ranks round-robin, each rank stores its own in
+    constant/calibration.processor<N>.h5 and the master merges those into
+    calibration.h5 at the end and at the start of any run (no decomposition
+    needed). -fromCase [time] takes the envelope from the case's fields
+    (n.<species>, T over the cells with phi >= phiMin) and the coefficients
+    from the mechanisms granularProperties switches on.
     Bad input stops with a FatalIOError naming the entry; a calibration.h5
     that is not ours (corrupt, foreign) stops with a FatalError naming the
     file and is left untouched. Documentation: docs/calibration.md.
