@@ -9,12 +9,24 @@
 #include "calibratedLaw.H"
 #include "zeroGradientFvPatchFields.H"
 
+#include <cstdio>
+#include <string>
+
 const Foam::Enum<Foam::calibratedLaw::outsidePolicy>
 Foam::calibratedLaw::outsidePolicyNames
 ({
     { outsidePolicy::clamp, "clamp" },
     { outsidePolicy::extrapolate, "extrapolate" },
     { outsidePolicy::error, "error" },
+    { outsidePolicy::runDEM, "runDEM" },
+});
+
+
+const Foam::Enum<Foam::calibratedLaw::modeType>
+Foam::calibratedLaw::modeNames
+({
+    { modeType::law, "law" },
+    { modeType::tabulated, "tabulated" },
 });
 
 
@@ -45,7 +57,78 @@ Foam::Tuple2<Foam::scalar, Foam::scalar> readRange
     return Foam::Tuple2<Foam::scalar, Foam::scalar>(r[0], r[1]);
 }
 
+//- Six significant digits in messages, whatever the stream's precision
+//  (writePrecision of controlDict sets it)
+std::string fmt6(const Foam::scalar v)
+{
+    char buf[32];
+    std::snprintf(buf, sizeof(buf), "%.6g", v);
+    return buf;
+}
+
+std::string fmt6(const Foam::Tuple2<Foam::scalar, Foam::scalar>& range)
+{
+    return "(" + fmt6(range.first()) + " " + fmt6(range.second()) + ")";
+}
+
+
+//- runDEM adds DEM conditions to a table; a fitted law cannot take them
+void checkPolicyFitsLaw
+(
+    const Foam::dictionary& modelDict,
+    const Foam::calibratedLaw::outsidePolicy policy
+)
+{
+    if (policy == Foam::calibratedLaw::outsidePolicy::runDEM)
+    {
+        FatalIOErrorInFunction(modelDict)
+            << "'outsideEnvelope runDEM' needs 'mode tabulated' (runDEM adds"
+            << " DEM conditions to the table of calibration.h5; a fitted law"
+            << " cannot take them); valid with mode law: (clamp extrapolate"
+            << " error)" << Foam::nl << Foam::exit(Foam::FatalIOError);
+    }
+}
+
 } // End anonymous namespace
+
+
+Foam::calibratedLaw::calibratedLaw
+(
+    const granularMixture& mixture,
+    const word& coefficient,
+    const dictionary& modelDict
+)
+:
+    coefficient_(coefficient),
+    law_(),
+    params_(),
+    policy_
+    (
+        outsidePolicyNames.getOrDefault
+        (
+            "outsideEnvelope",
+            modelDict,
+            outsidePolicy::clamp
+        )
+    ),
+    diameterPower_(1)
+{
+    const modeType mode =
+        modeNames.getOrDefault("mode", modelDict, modeType::law);
+
+    if (mode == modeType::law)
+    {
+        checkPolicyFitsLaw(modelDict, policy_);
+        readLaw(readCoefficients(mixture, modelDict));
+        return;
+    }
+
+    law_ = "tabulated";
+    table_.reset(new calibrationTable(mixture, modelDict, coefficient));
+    Info<< "    calibrated " << coefficient << ": outside the table's grid "
+        << phiRange() << " x " << xRange() << " x " << TRange() << ": "
+        << outsidePolicyNames[policy_] << nl;
+}
 
 
 Foam::calibratedLaw::calibratedLaw
@@ -69,13 +152,21 @@ Foam::calibratedLaw::calibratedLaw
     ),
     diameterPower_(1)
 {
-    if (modelDict.found("mode") && modelDict.get<word>("mode") != "law")
+    if (modeNames.getOrDefault("mode", modelDict, modeType::law) != modeType::law)
     {
         FatalIOErrorInFunction(modelDict)
-            << "mode '" << modelDict.get<word>("mode") << "' is not available"
-            << " in this version; valid: (law)" << nl << exit(FatalIOError);
+            << "mode '" << modelDict.get<word>("mode") << "' needs the"
+            << " mixture; this constructor reads laws only (mode law)" << nl
+            << exit(FatalIOError);
     }
+    checkPolicyFitsLaw(modelDict, policy_);
+    readLaw(coeffsDict);
+}
 
+
+void Foam::calibratedLaw::readLaw(const dictionary& coeffsDict)
+{
+    const word& coefficient = coefficient_;
     if (!coeffsDict.isDict(coefficient))
     {
         FatalIOErrorInFunction(coeffsDict)
@@ -149,6 +240,12 @@ Foam::scalar Foam::calibratedLaw::value
     const scalar d
 ) const
 {
+    if (table_)
+    {
+        // The table holds the fines' D (eta: the coarse's) whatever d is
+        return table_->value(phi, x, T);
+    }
+
     const scalar T1 = max(T, scalar(0))/3;
 
     if (law_ == "powerLaw")
@@ -177,6 +274,24 @@ Foam::scalar Foam::calibratedLaw::value
     return
         param("E")*pow(d, diameterPower_)*sqrt(T1)*pow(phi, param("p"))
        *(1 + param("beta")*x);
+}
+
+
+Foam::Tuple2<Foam::scalar, Foam::scalar> Foam::calibratedLaw::phiRange() const
+{
+    return table_ ? table_->phiRange() : phiRange_;
+}
+
+
+Foam::Tuple2<Foam::scalar, Foam::scalar> Foam::calibratedLaw::xRange() const
+{
+    return table_ ? table_->xRange() : xRange_;
+}
+
+
+Foam::Tuple2<Foam::scalar, Foam::scalar> Foam::calibratedLaw::TRange() const
+{
+    return table_ ? table_->TRange() : TRange_;
 }
 
 
@@ -209,6 +324,10 @@ Foam::tmp<Foam::volScalarField> Foam::calibratedLaw::evaluate
         return min(max(v, r.first()), r.second());
     };
 
+    const Tuple2<scalar, scalar> phiRange(this->phiRange());
+    const Tuple2<scalar, scalar> xRange(this->xRange());
+    const Tuple2<scalar, scalar> TRange(this->TRange());
+
     forAll(result, celli)
     {
         scalar p = phiReg[celli];
@@ -216,20 +335,34 @@ Foam::tmp<Foam::volScalarField> Foam::calibratedLaw::evaluate
         scalar Tc = T[celli];
 
         const bool holdsMaterial = phi[celli] >= mixture.phiMin();
-        if (holdsMaterial && policy_ != outsidePolicy::extrapolate)
+
+        // The table's values in empty cells do not matter (the presence
+        // factor removes them) but extrapolating ln(value) far out could
+        // overflow: clamp them silently
+        const bool clampSilently = table_ && !holdsMaterial;
+
+        if
+        (
+            clampSilently
+         || (holdsMaterial && policy_ != outsidePolicy::extrapolate)
+        )
         {
-            const scalar pc = clampTo(p, phiRange_);
-            const scalar xcl = clampTo(xc, xRange_);
-            const scalar Tcl = clampTo(Tc, TRange_);
-            if (policy_ == outsidePolicy::error && (pc != p || xcl != xc || Tcl != Tc))
+            const scalar pc = clampTo(p, phiRange);
+            const scalar xcl = clampTo(xc, xRange);
+            const scalar Tcl = clampTo(Tc, TRange);
+            if
+            (
+                !clampSilently && policy_ == outsidePolicy::error
+             && (pc != p || xcl != xc || Tcl != Tc)
+            )
             {
                 FatalErrorInFunction
                     << "Cell " << celli << " (centre "
                     << mixture.mesh().C()[celli] << ") is outside the"
                     << " envelope of the calibrated " << coefficient_
-                    << ": phi " << p << " in " << phiRange_
-                    << ", x " << xc << " in " << xRange_
-                    << ", T " << Tc << " in " << TRange_ << nl
+                    << ": phi " << fmt6(p).c_str() << " in " << fmt6(phiRange).c_str()
+                    << ", x " << fmt6(xc).c_str() << " in " << fmt6(xRange).c_str()
+                    << ", T " << fmt6(Tc).c_str() << " in " << fmt6(TRange).c_str() << nl
                     << "    (outsideEnvelope error; use clamp or extrapolate,"
                     << " or widen the calibration)" << nl << exit(FatalError);
             }

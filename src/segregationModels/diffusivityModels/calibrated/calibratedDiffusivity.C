@@ -26,7 +26,7 @@ Foam::diffusivityModels::calibrated::calibrated
 )
 :
     diffusivityModel(typeName, dict, mixture),
-    law_(calibratedLaw::readCoefficients(mixture, coeffs_), "D", coeffs_)
+    law_(mixture, "D", coeffs_)
 {}
 
 

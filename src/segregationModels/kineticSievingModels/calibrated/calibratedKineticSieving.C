@@ -29,7 +29,7 @@ Foam::kineticSievingModels::calibrated::calibrated
 :
     kineticSievingModel(typeName, dict, mixture),
     bulkFlow_(bulkFlow),
-    law_(calibratedLaw::readCoefficients(mixture, coeffs_), "eta", coeffs_),
+    law_(mixture, "eta", coeffs_),
     Umin_(coeffs_.getOrDefault<scalar>("Umin", 1e-6)),
     etaGradLnUSf_
     (

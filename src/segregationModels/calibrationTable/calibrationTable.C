@@ -1,0 +1,431 @@
+/*---------------------------------------------------------------------------*\
+  =========                 |
+  \\      /  F ield         | segregationDegradationFoam
+   \\    /   O peration     |
+    \\  /    A nd           |
+     \\/     M anipulation  |
+\*---------------------------------------------------------------------------*/
+
+#include "calibrationTable.H"
+
+#include "io/Hdf5File.hpp"
+#include "fit/SievingNormalisation.hpp"
+
+#include <gsl/gsl_interp.h>
+
+#include <cmath>
+#include <cstdio>
+#include <map>
+#include <stdexcept>
+#include <vector>
+
+const Foam::Enum<Foam::calibrationTable::interpolationType>
+Foam::calibrationTable::interpolationTypeNames
+({
+    { interpolationType::linear, "linear" },
+    { interpolationType::steffen, "steffen" },
+});
+
+const char* const Foam::calibrationTable::contentName =
+    "calibrateGranularMixture conditions";
+
+
+namespace
+{
+
+//- Relative tolerance under which two stored axis values are one grid value
+//  (the utility stores the dictionary's values; names use %.6g)
+const Foam::scalar sameValueTolerance = 1e-9;
+
+bool sameValue(const Foam::scalar a, const Foam::scalar b)
+{
+    return
+        std::abs(a - b)
+     <= sameValueTolerance*Foam::max(std::abs(a), std::abs(b));
+}
+
+
+//- Distinct sorted values
+Foam::scalarList distinctSorted(std::vector<Foam::scalar> values)
+{
+    std::sort(values.begin(), values.end());
+    Foam::DynamicList<Foam::scalar> out;
+    for (const Foam::scalar v : values)
+    {
+        if (out.empty() || !sameValue(out.last(), v))
+        {
+            out.append(v);
+        }
+    }
+    return Foam::scalarList(out);
+}
+
+
+Foam::label indexOf(const Foam::scalarList& axis, const Foam::scalar v)
+{
+    forAll(axis, i)
+    {
+        if (sameValue(axis[i], v))
+        {
+            return i;
+        }
+    }
+    return -1;
+}
+
+
+std::string fmt(const double v)
+{
+    char buf[64];
+    std::snprintf(buf, sizeof(buf), "%.6g", v);
+    return buf;
+}
+
+
+//- One stored condition (one replica)
+struct storedCondition
+{
+    std::string name;
+    double phi, x, targetT, T;
+    double value;
+};
+
+} // End anonymous namespace
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::calibrationTable::calibrationTable
+(
+    const granularMixture& mixture,
+    const dictionary& modelDict,
+    const word& coefficient
+)
+:
+    dict_(modelDict),
+    file_
+    (
+        mixture.mesh().time().globalPath()
+       /mixture.mesh().time().constant()
+       /modelDict.getOrDefault<fileName>("calibrationFile", "calibration.h5")
+    ),
+    coefficient_(coefficient),
+    fineName_(),
+    coarseName_(),
+    dFine_(0),
+    rhoFine_(0),
+    dCoarse_(0),
+    rhoCoarse_(0),
+    interpolation_
+    (
+        interpolationTypeNames.getOrDefault
+        (
+            "interpolation",
+            modelDict,
+            interpolationType::linear
+        )
+    ),
+    logValues_(true),
+    conditions_(0)
+{
+    if (coefficient_ != "D" && coefficient_ != "eta")
+    {
+        FatalErrorInFunction
+            << "Coefficient '" << coefficient_ << "' is not tabulated;"
+            << " valid: (D eta)" << exit(FatalError);
+    }
+
+    read();
+
+    // Species of the file must be species of the mixture: the eta
+    // conversion needs their d and rho, and D is the fines'
+    const label finei = mixture.names().find(fineName_);
+    const label coarsei = mixture.names().find(coarseName_);
+    if (finei < 0 || coarsei < 0)
+    {
+        FatalIOErrorInFunction(dict_)
+            << "Calibration table " << file_ << " is for the species ("
+            << fineName_ << ' ' << coarseName_ << "), the mixture has "
+            << mixture.names() << nl << exit(FatalIOError);
+    }
+    dFine_ = mixture.d(finei);
+    rhoFine_ = mixture.rho(finei);
+    dCoarse_ = mixture.d(coarsei);
+    rhoCoarse_ = mixture.rho(coarsei);
+
+    // eta depends on the species' d and rho: read again with them
+    if (coefficient_ == "eta")
+    {
+        read();
+    }
+
+    Info<< "    calibrated " << coefficient_ << ": tabulated from " << file_
+        << " (" << conditions_ << " conditions on a " << phi_.size()
+        << " phi x " << x_.size() << " x x " << T_.size() << " T grid, "
+        << interpolationTypeNames[interpolation_] << " in ln(phi), x, ln(T)"
+        << " of " << (logValues_ ? "ln(" + coefficient_ + ")" : coefficient_)
+        << ')' << nl;
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::calibrationTable::read()
+{
+    std::vector<storedCondition> stored;
+    const bool isD = coefficient_ == "D";
+    const bool haveSpecies = dFine_ > 0;
+
+    try
+    {
+        sdf::io::File f = sdf::io::File::openReadOnly(file_);
+        const sdf::io::Group root = f.root();
+        if
+        (
+            !root.hasAttribute("content")
+         || root.attributeType("content") != sdf::io::AttributeType::string
+         || root.readString("content") != contentName
+        )
+        {
+            throw std::runtime_error
+            (
+                "it is a segregationDegradationFoam HDF5 file, but not a"
+                " store of calibrateGranularMixture (root attribute content"
+                " = \"" + std::string(contentName) + "\" missing)"
+            );
+        }
+        fineName_ = root.readString("fineSpecies");
+        coarseName_ = root.readString("coarseSpecies");
+
+        if (root.hasGroup("conditions"))
+        {
+            const sdf::io::Group conditions = root.openGroup("conditions");
+            for (const std::string& name : conditions.childNames())
+            {
+                const sdf::io::Group g = conditions.openGroup(name);
+                storedCondition c;
+                c.name = name;
+                c.phi = g.readDouble("phi");
+                c.x = g.readDouble("x");
+                c.targetT = g.readDouble("targetT");
+                c.T = g.readDouble("T");
+                if (isD)
+                {
+                    c.value =
+                        g.openGroup("species/" + fineName_).readDouble("D");
+                }
+                else
+                {
+                    const double etaEngine =
+                        g.openGroup("species/" + coarseName_)
+                        .readDouble("eta");
+                    // Before the species are known the value is not used
+                    c.value =
+                        haveSpecies
+                      ? sdf::fit::kinematicSievingCoefficient
+                        (
+                            etaEngine, c.phi, c.x, c.T,
+                            {dFine_, rhoFine_},
+                            {dCoarse_, rhoCoarse_}
+                        )
+                      : etaEngine;
+                }
+                if
+                (
+                    !std::isfinite(c.phi) || !std::isfinite(c.x)
+                 || !std::isfinite(c.targetT) || !std::isfinite(c.value)
+                 || !(c.phi > 0) || !(c.targetT > 0)
+                )
+                {
+                    throw std::runtime_error
+                    (
+                        "condition " + name + " has a non-finite or"
+                        " non-positive phi, targetT or " + coefficient_
+                    );
+                }
+                stored.push_back(c);
+            }
+        }
+    }
+    catch (const std::exception& err)
+    {
+        FatalIOErrorInFunction(dict_)
+            << "Cannot use " << file_ << " as the calibration table of "
+            << coefficient_ << ":" << nl << "    " << err.what() << nl
+            << "    (calibrationFile: a constant/calibration.h5 written by"
+            << " calibrateGranularMixture)" << nl << exit(FatalIOError);
+    }
+
+    if (stored.empty())
+    {
+        FatalIOErrorInFunction(dict_)
+            << "Calibration table " << file_ << " holds no conditions" << nl
+            << exit(FatalIOError);
+    }
+
+    // Grid axes
+    {
+        std::vector<scalar> phis, xs, Ts;
+        for (const storedCondition& c : stored)
+        {
+            phis.push_back(c.phi);
+            xs.push_back(c.x);
+            Ts.push_back(c.targetT);
+        }
+        phi_ = distinctSorted(phis);
+        x_ = distinctSorted(xs);
+        T_ = distinctSorted(Ts);
+    }
+    lnPhi_.setSize(phi_.size());
+    forAll(phi_, i)
+    {
+        lnPhi_[i] = Foam::log(phi_[i]);
+    }
+    lnT_.setSize(T_.size());
+    forAll(T_, i)
+    {
+        lnT_[i] = Foam::log(T_[i]);
+    }
+
+    // Replica average per grid point
+    const label nx = x_.size(), nT = T_.size();
+    scalarList sum(phi_.size()*nx*nT, Zero);
+    labelList count(sum.size(), Zero);
+    for (const storedCondition& c : stored)
+    {
+        const label k =
+            (indexOf(phi_, c.phi)*nx + indexOf(x_, c.x))*nT
+          + indexOf(T_, c.targetT);
+        sum[k] += c.value;
+        ++count[k];
+    }
+
+    forAll(count, k)
+    {
+        if (count[k] == 0)
+        {
+            const label i = k/(nx*nT);
+            const label j = (k/nT) % nx;
+            const label l = k % nT;
+            FatalIOErrorInFunction(dict_)
+                << "Calibration table " << file_ << " is not a complete grid:"
+                << " condition phi" << fmt(phi_[i]).c_str()
+                << "_x" << fmt(x_[j]).c_str() << "_T" << fmt(T_[l]).c_str()
+                << " (any seed) is missing (grid " << phi_ << " x " << x_
+                << " x " << T_ << ")" << nl
+                << "    Run calibrateGranularMixture over the full envelope"
+                << nl << exit(FatalIOError);
+        }
+    }
+
+    values_ = sum;
+    logValues_ = true;
+    forAll(values_, k)
+    {
+        values_[k] /= count[k];
+        logValues_ = logValues_ && values_[k] > 0;
+    }
+    if (logValues_)
+    {
+        for (scalar& v : values_)
+        {
+            v = Foam::log(v);
+        }
+    }
+    conditions_ = label(stored.size());
+}
+
+
+Foam::Tuple2<Foam::scalar, Foam::scalar>
+Foam::calibrationTable::phiRange() const
+{
+    return Tuple2<scalar, scalar>(phi_.first(), phi_.last());
+}
+
+
+Foam::Tuple2<Foam::scalar, Foam::scalar>
+Foam::calibrationTable::xRange() const
+{
+    return Tuple2<scalar, scalar>(x_.first(), x_.last());
+}
+
+
+Foam::Tuple2<Foam::scalar, Foam::scalar>
+Foam::calibrationTable::TRange() const
+{
+    return Tuple2<scalar, scalar>(T_.first(), T_.last());
+}
+
+
+Foam::scalar Foam::calibrationTable::interpolate1
+(
+    const scalarList& axis,
+    const scalarList& values,
+    const scalar q
+) const
+{
+    const label n = axis.size();
+    if (n == 1)
+    {
+        return values[0];
+    }
+
+    // Outside the axis: the end interval's straight line. GSL refuses
+    // (its error handler would abort) rather than extrapolate.
+    if (q <= axis[0] || q >= axis[n - 1])
+    {
+        const label a = q <= axis[0] ? 0 : n - 2;
+        return
+            values[a]
+          + (q - axis[a])*(values[a + 1] - values[a])/(axis[a + 1] - axis[a]);
+    }
+
+    // Steffen's monotone cubic needs three points; two: a straight line
+    const gsl_interp_type* type =
+        interpolation_ == interpolationType::steffen && n >= 3
+      ? gsl_interp_steffen
+      : gsl_interp_linear;
+
+    gsl_interp* interp = gsl_interp_alloc(type, n);
+    gsl_interp_init(interp, axis.cdata(), values.cdata(), n);
+    const scalar v = gsl_interp_eval(interp, axis.cdata(), values.cdata(), q, nullptr);
+    gsl_interp_free(interp);
+    return v;
+}
+
+
+Foam::scalar Foam::calibrationTable::value
+(
+    const scalar phi,
+    const scalar x,
+    const scalar T
+) const
+{
+    if (!(T > 0) || !(phi > 0))
+    {
+        return 0;
+    }
+    const scalar lnPhi = Foam::log(phi);
+    const scalar lnT = Foam::log(T);
+
+    const label nPhi = phi_.size(), nx = x_.size(), nT = T_.size();
+    scalarList alongT(nT), alongX(nx), alongPhi(nPhi);
+    for (label i = 0; i < nPhi; ++i)
+    {
+        for (label j = 0; j < nx; ++j)
+        {
+            const label start = (i*nx + j)*nT;
+            for (label l = 0; l < nT; ++l)
+            {
+                alongT[l] = values_[start + l];
+            }
+            alongX[j] = interpolate1(lnT_, alongT, lnT);
+        }
+        alongPhi[i] = interpolate1(x_, alongX, x);
+    }
+    const scalar v = interpolate1(lnPhi_, alongPhi, lnPhi);
+    return logValues_ ? Foam::exp(v) : v;
+}
+
+
+// ************************************************************************* //
