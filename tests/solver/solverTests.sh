@@ -497,7 +497,32 @@ test_calibration_concurrent()
     grep -q "8 conditions to run, 2 at once" "$dir/log" || { echo "did not run 2 at once"; grep "at once" "$dir/log"; return 1; }
     [ "$(grep -c "done in" "$dir/log")" -eq 8 ] || { echo "not 8 progress lines"; return 1; }
     grep -E "^DEM:" "$ref/log" "$dir/log"
-    same_conditions "$ref" "$dir"
+    same_conditions "$ref" "$dir" || return 1
+
+    # killed (kill -9) after its first finished condition, with the other
+    # worker still running: the rerun skips what was stored, runs the rest
+    local killed="$workRoot/calibrationConcurrentKill"
+    copy_calibration_case "$killed"
+    foamDictionary -entry concurrentConditions -set 2 "$killed/system/calibrationDict" > /dev/null
+    calibrateGranularMixture -case "$killed" -noFit > "$killed/log.1" 2>&1 &
+    local pid=$! i
+    for i in $(seq 1 600)
+    do
+        grep -q "done in" "$killed/log.1" 2>/dev/null && break
+        sleep 0.05
+    done
+    kill -9 "$pid" 2>/dev/null
+    wait "$pid" 2>/dev/null
+    local stored
+    stored=$(h5ls "$killed/constant/calibration.h5/conditions" 2>/dev/null | wc -l)
+    [ "$stored" -ge 1 ] && [ "$stored" -lt 8 ] || { echo "kill did not land mid-run ($stored stored)"; return 1; }
+    calibrateGranularMixture -case "$killed" -noFit > "$killed/log.2" 2>&1 || { tail -20 "$killed/log.2"; return 1; }
+    local skipped ran
+    skipped=$(grep -c "^skipping .*(already in calibration.h5)" "$killed/log.2")
+    ran=$(grep -c "done in" "$killed/log.2")
+    echo "2 workers killed after $stored stored conditions; rerun: $skipped skipped, $ran run"
+    [ "$skipped" -eq "$stored" ] && [ "$ran" -eq $((8 - stored)) ] || { echo "rerun repeated or missed conditions"; return 1; }
+    same_conditions "$ref" "$killed"
 }
 
 # -parallel on 2 MPI ranks (no decomposition): both ranks run conditions,
