@@ -125,8 +125,13 @@ Foam::calibratedLaw::calibratedLaw
 
     law_ = "tabulated";
     table_.reset(new calibrationTable(mixture, modelDict, coefficient));
+    if (policy_ == outsidePolicy::runDEM)
+    {
+        runner_.reset(new calibrationDEMRunner(mixture, *table_, modelDict));
+    }
     Info<< "    calibrated " << coefficient << ": outside the table's grid "
-        << phiRange() << " x " << xRange() << " x " << TRange() << ": "
+        << fmt6(phiRange()).c_str() << " x " << fmt6(xRange()).c_str()
+        << " x " << fmt6(TRange()).c_str() << ": "
         << outsidePolicyNames[policy_] << nl;
 }
 
@@ -323,6 +328,29 @@ Foam::tmp<Foam::volScalarField> Foam::calibratedLaw::evaluate
     {
         return min(max(v, r.first()), r.second());
     };
+
+    // runDEM: grow the table's grid first to cover every cell holding
+    // material (collective in parallel: every rank calls extend)
+    if (runner_)
+    {
+        calibrationDEMRunner::cellRanges ranges
+        {
+            GREAT, -GREAT, GREAT, -GREAT, GREAT, -GREAT
+        };
+        forAll(phi, celli)
+        {
+            if (phi[celli] >= mixture.phiMin())
+            {
+                ranges.phiMin = min(ranges.phiMin, phiReg[celli]);
+                ranges.phiMax = max(ranges.phiMax, phiReg[celli]);
+                ranges.xMin = min(ranges.xMin, x[celli]);
+                ranges.xMax = max(ranges.xMax, x[celli]);
+                ranges.TMin = min(ranges.TMin, T[celli]);
+                ranges.TMax = max(ranges.TMax, T[celli]);
+            }
+        }
+        runner_->extend(*table_, ranges);
+    }
 
     const Tuple2<scalar, scalar> phiRange(this->phiRange());
     const Tuple2<scalar, scalar> xRange(this->xRange());

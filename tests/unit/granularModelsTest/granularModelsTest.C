@@ -36,6 +36,7 @@ Description
 #include "io/Hdf5File.hpp"
 #include "fit/SievingNormalisation.hpp"
 
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <functional>
@@ -622,6 +623,82 @@ TEST(kineticSieving, tabulatedEtaInKinematicUnits)
     EXPECT_EQ(eta.nConditions(), 3*2*3*2);
     EXPECT_EQ(eta.phiRange().second(), 0.5);
     EXPECT_EQ(eta.TRange().first(), 0.001);
+}
+
+
+TEST(diffusivity, tabulatedRunDEMExtendsTheGrid)
+{
+    // A 2 x 2 x 2 grid; the cells reach phi 0.42 > 0.35: runDEM runs the
+    // new slice phi 0.42 x (x 0.2, 0.4) x (T 0.005, 0.02) with the tiny DEM
+    // settings below (one replica) and stores it in the file
+    syntheticTable table;
+    table.phi = {0.2, 0.35};
+    table.T = {0.005, 0.02};
+    table.seeds = {1};
+    table.D = [](double phi, double x, double T) { return 1e-3*T/phi*(1 + x); };
+    const fileName h5(constantFile("calibrationRunDEM.h5"));
+    table.write(h5);
+    {
+        OFstream os(testTimePtr->globalPath()/"system"/"calibrationDict");
+        os  << "FoamFile { version 2.0; format ascii; class dictionary;"
+            << " object calibrationDict; }" << nl
+            << "replicas (1); particles 100; mode thermostatted;" << nl
+            << "contact { model linearSpringDashpot; restitution 0.9;"
+            << " friction 0.3; normalStiffness 2e3; }" << nl
+            << "equilibrationTime 0.001; maxEquilibrationTime 0.002;"
+            << " samplingTime 0.002; threads 1;" << nl;
+    }
+
+    autoPtr<diffusivityModel> Drun
+    (
+        diffusivityModel::New
+        (
+            dictOf
+            (
+                "model calibrated; calibratedCoeffs { mode tabulated;"
+                " calibrationFile calibrationRunDEM.h5;"
+                " outsideEnvelope runDEM; runDEMMargin 0; }"
+            ),
+            *testMixturePtr
+        )
+    );
+
+    const auto storedNames = [&h5]()
+    {
+        sdf::io::File f = sdf::io::File::openReadOnly(h5);
+        return f.root().openGroup("conditions").childNames();
+    };
+    ASSERT_EQ(storedNames().size(), 8u);
+
+    setFields(0.42*0.8, 0.42*0.2);   // phi 0.42, x 0.2
+    const volScalarField T(uniformT(0.005));
+    const scalar D = Drun->D(0, T)()[0];
+
+    const std::vector<std::string> names = storedNames();
+    ASSERT_EQ(names.size(), 12u);
+    for (const char* added :
+    {
+        "phi0.42_x0.2_T0.005_seed1", "phi0.42_x0.2_T0.02_seed1",
+        "phi0.42_x0.4_T0.005_seed1", "phi0.42_x0.4_T0.02_seed1"
+    })
+    {
+        EXPECT_NE(std::find(names.begin(), names.end(), added), names.end())
+            << added << " not stored";
+    }
+
+    // The cell sits on the new grid point: its D is the DEM's
+    sdf::io::File f = sdf::io::File::openReadOnly(h5);
+    const sdf::io::Group g =
+        f.root().openGroup("conditions/phi0.42_x0.2_T0.005_seed1");
+    EXPECT_EQ(g.readDouble("phi"), 0.42);
+    EXPECT_GT(g.readDouble("T"), 0);
+    const double Ddem = g.openGroup("species/fine").readDouble("D");
+    EXPECT_GT(Ddem, 0);
+    EXPECT_NEAR(D, Ddem, 1e-9*Ddem);
+
+    // Inside the grown grid nothing runs again
+    Drun->D(0, T);
+    EXPECT_EQ(storedNames().size(), 12u);
 }
 
 

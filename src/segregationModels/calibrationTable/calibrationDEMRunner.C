@@ -1,0 +1,531 @@
+/*---------------------------------------------------------------------------*\
+  =========                 |
+  \\      /  F ield         | segregationDegradationFoam
+   \\    /   O peration     |
+    \\  /    A nd           |
+     \\/     M anipulation  |
+\*---------------------------------------------------------------------------*/
+
+#include "calibrationDEMRunner.H"
+#include "IOdictionary.H"
+#include "OSspecific.H"
+#include "Pstream.H"
+
+#include "demDictionary.H"
+#include "CellRun.hpp"
+#include "io/Hdf5File.hpp"
+
+#include <cfenv>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <sstream>
+#include <stdexcept>
+
+namespace
+{
+
+//- Composition limits of the DEM runs: a cell of one species has no
+//  partner to sieve through, and a handful of particles no statistics
+const Foam::scalar xLowest = 0.02;
+const Foam::scalar xHighest = 0.98;
+
+std::string fmt(const double v)
+{
+    char buf[64];
+    std::snprintf(buf, sizeof(buf), "%.6g", v);
+    return buf;
+}
+
+std::string fmtList(const Foam::scalarList& values)
+{
+    std::string text("(");
+    for (const Foam::scalar v : values)
+    {
+        text += (text.size() > 1 ? " " : "") + fmt(v);
+    }
+    return text + ")";
+}
+
+std::string fmt10(const double v)
+{
+    char buf[64];
+    std::snprintf(buf, sizeof(buf), "%.10g", v);
+    return buf;
+}
+
+
+//- v rounded to the 6 significant digits of the condition names, so that
+//  a condition's name and its phi/x/targetT attributes say the same;
+//  rounded away from the grid (up = true: not below v)
+double roundOutward(const double v, const bool up)
+{
+    double r = std::strtod(fmt(v).c_str(), nullptr);
+    // A cell value a rounding error off a 6-digit value keeps that value
+    if (std::abs(r - v) <= 1e-9*std::abs(v))
+    {
+        return r;
+    }
+    if (up ? r < v : r > v)
+    {
+        r = std::strtod(fmt(up ? v*(1 + 5e-6) : v*(1 - 5e-6)).c_str(), nullptr);
+    }
+    return r;
+}
+
+
+//- The utility's condition group name (calibrateGranularMixture.C)
+std::string conditionName
+(
+    const double phi,
+    const double x,
+    const double T,
+    const Foam::label seed
+)
+{
+    return
+        "phi" + fmt(phi) + "_x" + fmt(x) + "_T" + fmt(T)
+      + "_seed" + std::to_string(seed);
+}
+
+
+//- The DEM engine handles IEEE infinities and NaNs itself: no OpenFOAM
+//  floating-point trap while it runs (as calibrateGranularMixture)
+class noFloatingPointTraps
+{
+    std::fenv_t saved_;
+
+public:
+
+    noFloatingPointTraps() { std::feholdexcept(&saved_); }
+    ~noFloatingPointTraps() { std::fesetenv(&saved_); }
+};
+
+} // End anonymous namespace
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::calibrationDEMRunner::calibrationDEMRunner
+(
+    const granularMixture& mixture,
+    const calibrationTable& table,
+    const dictionary& modelDict
+)
+:
+    file_(table.file()),
+    fineName_(table.fineSpecies()),
+    coarseName_(table.coarseSpecies()),
+    base_(new sdf::dem::CellRunSettings()),
+    replicas_(),
+    settingsKey_(),
+    margin_(modelDict.getOrDefault<scalar>("runDEMMargin", 0.1)),
+    maxPhi_(modelDict.getOrDefault<scalar>("runDEMMaxPhi", 0.6)),
+    minT_(modelDict.getOrDefault<scalar>("runDEMMinT", 1e-4)),
+    conditionsRun_(0),
+    secondsRun_(0)
+{
+    if (!(margin_ >= 0) || !(maxPhi_ > 0 && maxPhi_ < 0.64) || !(minT_ > 0))
+    {
+        FatalIOErrorInFunction(modelDict)
+            << "runDEM limits: runDEMMargin " << margin_ << " must be >= 0,"
+            << " runDEMMaxPhi " << maxPhi_ << " in (0, 0.64) (jamming),"
+            << " runDEMMinT " << minT_ << " > 0 [m2/s2]" << nl
+            << exit(FatalIOError);
+    }
+
+    // The DEM settings of the calibration (system/calibrationDict), read as
+    // calibrateGranularMixture reads them
+    const IOdictionary dict
+    (
+        IOobject
+        (
+            "calibrationDict",
+            mixture.mesh().time().system(),
+            mixture.mesh(),
+            IOobject::MUST_READ,
+            IOobject::NO_WRITE,
+            false
+        )
+    );
+
+    const label finei = mixture.names().find(fineName_);
+    const label coarsei = mixture.names().find(coarseName_);
+    if (mixture.size() != 2 || !(mixture.d(coarsei) > mixture.d(finei)))
+    {
+        FatalIOErrorInFunction(modelDict)
+            << "outsideEnvelope runDEM runs binary mixtures whose coarse"
+            << " species (" << coarseName_ << ") is larger than the fine ("
+            << fineName_ << "); the mixture has " << mixture.names() << nl
+            << exit(FatalIOError);
+    }
+
+    sdf::dem::CellRunSettings& b = *base_;
+    b.species =
+    {
+        {fineName_, mixture.d(finei), mixture.rho(finei)},
+        {coarseName_, mixture.d(coarsei), mixture.rho(coarsei)}
+    };
+    b.particles = dict.getOrDefault<label>("particles", 1000);
+    const word mode(dict.getOrDefault<word>("mode", "thermostatted"));
+    if (mode != "thermostatted")
+    {
+        FatalIOErrorInFunction(dict)
+            << "Entry 'mode' " << mode << ": runDEM runs driven cells only"
+            << " (mode thermostatted)" << nl << exit(FatalIOError);
+    }
+    b.simulation.mode = sdf::dem::cellModeFromName(mode);
+    demDictionary::readRunControls(dict, b);
+    b.progressEvery = 0;
+
+    replicas_ = dict.getOrDefault<labelList>("replicas", labelList({1}));
+    if (replicas_.empty())
+    {
+        FatalIOErrorInFunction(dict)
+            << "Entry 'replicas' (DEM seeds) is empty" << nl
+            << exit(FatalIOError);
+    }
+
+    // Fingerprint of the DEM settings: a copy of calibrateGranularMixture's
+    // (readSetup), so that the utility and runDEM recognise each other's
+    // stored conditions; keep the two in step
+    const sdf::dem::SimulationSettings& sim = b.simulation;
+    const sdf::dem::ContactSettings& c = sim.contact;
+    const dictionary& contact = dict.subOrEmptyDict("contact");
+    std::ostringstream key;
+    key << "species";
+    for (const auto& sp : b.species)
+    {
+        key << " " << sp.name << ":" << fmt10(sp.diameter) << ":"
+            << fmt10(sp.density);
+    }
+    key << "; particles " << b.particles
+        << "; contact "
+        << contact.getOrDefault<word>("model", "linearSpringDashpot")
+        << " e " << fmt10(c.restitution) << " mu " << fmt10(c.friction)
+        << " kn " << fmt10(c.normalStiffness)
+        << " kt/kn " << fmt10(c.tangentialStiffnessRatio)
+        << " gt/gn " << fmt10(c.tangentialDampingRatio)
+        << " E " << fmt10(c.youngsModulus) << " nu " << fmt10(c.poissonRatio)
+        << "; timeStep " << fmt10(sim.timeStep)
+        << "; thermostatTime " << fmt10(sim.thermostatTime)
+        << "; equilibrationTime " << fmt10(b.equilibrationTime)
+        << "; maxEquilibrationTime " << fmt10(b.maxEquilibrationTime)
+        << "; samplingTime " << fmt10(b.samplingTime)
+        << "; sampleEvery " << b.sampleEvery << "; blocks " << b.blocks;
+    settingsKey_ = key.str();
+
+    Info<< "    calibrated: outside the grid, runDEM with the DEM settings of "
+        << dict.objectPath() << " (" << b.particles << " particles, sampling "
+        << b.samplingTime << " s, " << replicas_.size() << " replicas)"
+        << nl;
+}
+
+
+Foam::calibrationDEMRunner::~calibrationDEMRunner()
+{}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+Foam::label Foam::calibrationDEMRunner::runCondition
+(
+    const scalar phi,
+    const scalar x,
+    const scalar T
+)
+{
+    label ran = 0;
+    for (const label seed : replicas_)
+    {
+        const std::string name = conditionName(phi, x, T, seed);
+
+        // Stored already (by the utility or another calibrated model)?
+        if (isFile(file_))
+        {
+            try
+            {
+                sdf::io::File f = sdf::io::File::openReadOnly(file_);
+                const sdf::io::Group root = f.root();
+                if (root.hasGroup("conditions/" + name))
+                {
+                    const std::string storedKey =
+                        root.openGroup("conditions/" + name)
+                        .readString("settingsKey");
+                    if (storedKey != settingsKey_)
+                    {
+                        FatalErrorInFunction
+                            << "Condition " << name.c_str() << " in "
+                            << file_ << " was run with other DEM settings:"
+                            << nl << "    stored:  " << storedKey.c_str()
+                            << nl << "    current: " << settingsKey_.c_str()
+                            << nl << exit(FatalError);
+                    }
+                    continue;
+                }
+            }
+            catch (const std::exception& err)
+            {
+                FatalErrorInFunction
+                    << "Cannot read " << file_ << ": " << err.what() << nl
+                    << exit(FatalError);
+            }
+        }
+
+        sdf::dem::CellRunSettings s = *base_;
+        s.volumeFractions = {1 - x, x};
+        s.solidsFraction = phi;
+        s.simulation.targetTemperature = T;
+        s.seed = seed;
+        s.label = name;
+
+        const auto t0 = std::chrono::steady_clock::now();
+        sdf::dem::CellRunResult r;
+        try
+        {
+            sdf::dem::validateCellRunSettings(s);
+            noFloatingPointTraps guard;
+            r = sdf::dem::runCell(s);
+        }
+        catch (const std::exception& err)
+        {
+            FatalErrorInFunction
+                << "runDEM: the DEM engine stopped condition " << name.c_str()
+                << ":" << nl << "    " << err.what() << nl << exit(FatalError);
+        }
+
+        // Stored at once, atomically, as calibrateGranularMixture stores a
+        // condition (its storeCondition): copy to <file>.tmp, add, rename
+        try
+        {
+            const bool exists = isFile(file_);
+            sdf::io::AtomicFile out =
+                exists
+              ? sdf::io::AtomicFile::update(file_)
+              : sdf::io::AtomicFile::create(file_);
+            const sdf::io::Group root = out.root();
+            if (!exists)
+            {
+                root.setAttribute("content", calibrationTable::contentName);
+                root.setAttribute("fineSpecies", std::string(fineName_));
+                root.setAttribute("coarseSpecies", std::string(coarseName_));
+            }
+            const sdf::io::Group g = root.createGroup("conditions/" + name);
+            g.setAttribute("phi", double(phi));
+            g.setAttribute("x", double(x));
+            g.setAttribute("targetT", double(T));
+            g.setAttribute("seed", std::int64_t(seed));
+            g.setAttribute("particles", std::int64_t(r.settings.particles));
+            g.setAttribute("settingsKey", settingsKey_);
+            g.setAttribute("T", r.temperature);
+            g.setAttribute("TError", r.temperatureError);
+            g.setAttribute("equilibrated", std::int64_t(r.equilibrated ? 1 : 0));
+            g.setAttribute("equilibrationTime", r.equilibrationTime);
+            g.setAttribute("timeStep", r.timeStep);
+            g.setAttribute("boxLength", r.boxLength);
+            g.setAttribute("steps", std::int64_t(r.steps));
+            for (std::size_t i = 0; i < r.species.size(); ++i)
+            {
+                const sdf::dem::SpeciesTransport& st = r.species[i];
+                const sdf::io::Group sg = g.createGroup("species/" + st.name);
+                sg.setAttribute("role", i == 0 ? "fine" : "coarse");
+                sg.setAttribute("d", base_->species[i].diameter);
+                sg.setAttribute("count", std::int64_t(st.count));
+                sg.setAttribute("T", st.temperature);
+                sg.setAttribute("D", st.greenKubo.integral.value);
+                sg.setAttribute("DError", st.greenKubo.integral.standardError);
+                sg.setAttribute
+                (
+                    "DPlateauFound",
+                    std::int64_t(st.greenKubo.plateauFound ? 1 : 0)
+                );
+                sg.setAttribute("DMsd", st.diffusivityMsd.value);
+                sg.setAttribute("DMsdError", st.diffusivityMsd.standardError);
+                if (i < r.kineticSieving.size())
+                {
+                    sg.setAttribute("eta", r.kineticSieving[i].value);
+                    sg.setAttribute("etaError", r.kineticSieving[i].standardError);
+                }
+            }
+            const sdf::io::Group t = g.createGroup("timing");
+            t.setAttribute("wallSeconds", r.wallSeconds);
+            t.setAttribute("cpuSeconds", r.cpuSeconds);
+            t.setAttribute("particleStepsPerSecond", r.particleStepsPerSecond);
+            out.commit();
+        }
+        catch (const std::exception& err)
+        {
+            FatalErrorInFunction
+                << "runDEM: storing condition " << name.c_str() << " in "
+                << file_ << " failed:" << nl << "    " << err.what() << nl
+                << exit(FatalError);
+        }
+
+        const scalar seconds = std::chrono::duration<double>
+        (
+            std::chrono::steady_clock::now() - t0
+        ).count();
+        ++ran;
+        ++conditionsRun_;
+        secondsRun_ += seconds;
+        Info<< "    runDEM: " << name.c_str() << " done in "
+            << fmt(seconds).c_str() << " s (T = "
+            << fmt(r.temperature).c_str() << ", D_" << fineName_ << " = "
+            << fmt(r.species[0].greenKubo.integral.value).c_str()
+            << " m2/s)" << endl;
+    }
+    return ran;
+}
+
+
+bool Foam::calibrationDEMRunner::extend
+(
+    calibrationTable& table,
+    const cellRanges& localRanges
+)
+{
+    cellRanges r = localRanges;
+    reduce(r.phiMin, minOp<scalar>());
+    reduce(r.xMin, minOp<scalar>());
+    reduce(r.TMin, minOp<scalar>());
+    reduce(r.phiMax, maxOp<scalar>());
+    reduce(r.xMax, maxOp<scalar>());
+    reduce(r.TMax, maxOp<scalar>());
+
+    const scalar grow = 1 + margin_;
+
+    // New axis values: the extreme cell value, widened on the ln axes,
+    // rounded outward, clipped to the DEM's range; kept only if it extends
+    // the axis (so a cell just beyond a clip limit runs nothing again)
+    auto newValues = []
+    (
+        const scalarList& axis,
+        const scalar lo,
+        const scalar hi,
+        const scalar clipLo,
+        const scalar clipHi
+    )
+    {
+        // Within the 6 digits of the names a cell is on the grid's edge
+        const scalar tol = 1e-6;
+        DynamicList<scalar> values;
+        if (lo < axis.first()*(1 - tol))
+        {
+            const scalar v = max(roundOutward(lo, false), clipLo);
+            if (v < axis.first())
+            {
+                values.append(v);
+            }
+        }
+        if (hi > axis.last()*(1 + tol))
+        {
+            const scalar v = min(roundOutward(hi, true), clipHi);
+            if (v > axis.last())
+            {
+                values.append(v);
+            }
+        }
+        return scalarList(values);
+    };
+
+    const scalarList newPhi
+    (
+        newValues
+        (
+            table.phiAxis(), r.phiMin/grow, r.phiMax*grow, 1e-3, maxPhi_
+        )
+    );
+    const scalarList newX
+    (
+        newValues(table.xAxis(), r.xMin, r.xMax, xLowest, xHighest)
+    );
+    const scalarList newT
+    (
+        newValues(table.TAxis(), r.TMin/grow, r.TMax*grow, minT_, GREAT)
+    );
+
+    if (newPhi.empty() && newX.empty() && newT.empty())
+    {
+        return false;
+    }
+
+    // The new grid slices, axis after axis, so that the grid stays complete
+    struct condition { scalar phi, x, T; };
+    DynamicList<condition> conditions;
+    scalarList phiAxis(table.phiAxis()), xAxis(table.xAxis());
+    const scalarList& TAxis = table.TAxis();
+    for (const scalar phi : newPhi)
+    {
+        for (const scalar x : xAxis)
+        {
+            for (const scalar T : TAxis)
+            {
+                conditions.append(condition{phi, x, T});
+            }
+        }
+    }
+    phiAxis.append(newPhi);
+    for (const scalar x : newX)
+    {
+        for (const scalar phi : phiAxis)
+        {
+            for (const scalar T : TAxis)
+            {
+                conditions.append(condition{phi, x, T});
+            }
+        }
+    }
+    xAxis.append(newX);
+    for (const scalar T : newT)
+    {
+        for (const scalar phi : phiAxis)
+        {
+            for (const scalar x : xAxis)
+            {
+                conditions.append(condition{phi, x, T});
+            }
+        }
+    }
+
+    Info<< "runDEM: cells holding material reach phi ["
+        << fmt(r.phiMin).c_str() << ", " << fmt(r.phiMax).c_str() << "], x ["
+        << fmt(r.xMin).c_str() << ", " << fmt(r.xMax).c_str() << "], T ["
+        << fmt(r.TMin).c_str() << ", " << fmt(r.TMax).c_str()
+        << "] beyond the grid of " << file_ << nl
+        << "    new grid values: phi " << fmtList(newPhi).c_str()
+        << ", x " << fmtList(newX).c_str() << ", T " << fmtList(newT).c_str()
+        << ": " << conditions.size()
+        << " conditions x " << replicas_.size() << " replicas" << endl;
+
+    const auto start = std::chrono::steady_clock::now();
+    label ran = 0;
+    if (Pstream::master())
+    {
+        for (const condition& c : conditions)
+        {
+            ran += runCondition(c.phi, c.x, c.T);
+        }
+    }
+    // Every rank waits for the master's file before reading it
+    reduce(ran, sumOp<label>());
+
+    table.read();
+
+    Info<< "runDEM: " << ran << " DEM runs in "
+        << fmt
+           (
+               std::chrono::duration<double>
+               (
+                   std::chrono::steady_clock::now() - start
+               ).count()
+           ).c_str()
+        << " s; table now " << table.phiAxis().size() << " phi x "
+        << table.xAxis().size() << " x x " << table.TAxis().size()
+        << " T, " << table.nConditions() << " conditions" << endl;
+
+    return true;
+}
+
+
+// ************************************************************************* //
