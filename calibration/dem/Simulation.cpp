@@ -377,62 +377,34 @@ void Simulation::partitionWork()
     blockPair_.assign(nBlocks + 1, nPairs);
     blockParticle_[0] = 0;
     blockPair_[0] = 0;
-    if (nBlocks > 1 && n > 0)
+    if (nBlocks > 1)
     {
-        // Relative costs (measured on the sheared N 3000 cell): a listed pair costs 1,
-        // gathering one incident pair 0.3, integrating one particle 0.5. Block 0 scatters
-        // directly and gathers nothing, so it gets more particles.
-        constexpr double gatherCost = 0.3, particleCost = 0.5;
+        // equal shares of the work: a listed pair (nearly all of them are not touching:
+        // distance test only) costs 1, integrating a particle about 0.5 (measured on the
+        // sheared N 3000 cell). Deterministic: depends on the pair list only.
+        constexpr double particleCost = 0.5;
         const std::vector<int>& first = list_.first();
-        const std::vector<int>& incident = list_.incidentStart();
-        std::vector<double> asFirst(n, 0.0);
-        for (int k = 0; k < nPairs; ++k) asFirst[first[k]] += 1;
-        auto cost = [&](int i, int block)
+        const double total = nPairs + particleCost*n;
+        double done = 0;
+        int k = 0, block = 1;
+        for (int i = 0; i < n && block < nBlocks; ++i)
         {
-            const double gather = block > 0 ? gatherCost*(incident[i + 1] - incident[i]) : 0.0;
-            return asFirst[i] + gather + particleCost;
-        };
-        // smallest per-block budget with which nBlocks consecutive blocks cover all
-        // particles (bisection); deterministic: depends on the pair list only
-        auto blocksNeeded = [&](double budget, std::vector<int>* starts)
-        {
-            int block = 0;
-            double used = 0;
-            if (starts) (*starts)[0] = 0;
-            for (int i = 0; i < n; ++i)
+            while (done >= block*total/nBlocks && block < nBlocks)
             {
-                const double c = cost(i, block);
-                if (used > 0 && used + c > budget)
-                {
-                    ++block;
-                    used = 0;
-                    if (starts && block < nBlocks) (*starts)[block] = i;
-                }
-                used += cost(i, block);
+                blockParticle_[block] = i;
+                blockPair_[block] = k;
+                ++block;
             }
-            return block + 1;
-        };
-        double lo = 0, hi = 0;
-        for (int i = 0; i < n; ++i) hi += cost(i, 1);
-        for (int it = 0; it < 60; ++it)
-        {
-            const double mid = 0.5*(lo + hi);
-            if (blocksNeeded(mid, nullptr) <= nBlocks) hi = mid; else lo = mid;
-        }
-        blockParticle_.assign(nBlocks + 1, n);
-        const int used = blocksNeeded(hi, &blockParticle_);
-        for (int b = used; b <= nBlocks; ++b) blockParticle_[b] = n;
-        for (int b = 1; b < nBlocks; ++b)
-        {
-            blockPair_[b] = int
-            (
-                std::lower_bound(first.begin(), first.end(), blockParticle_[b]) - first.begin()
-            );
+            const int k0 = k;
+            while (k < nPairs && first[k] == i) ++k;
+            done += (k - k0) + particleCost;
         }
     }
     blockCounts_.resize(nBlocks);
     blockEnergy_.resize(nBlocks);
     blockHist_.resize(nBlocks);
+    blockContacts_.resize(nBlocks);
+    blockContactCount_.assign(nBlocks, 0);
 }
 
 void Simulation::computeForces(bool checkDisplacements, bool halfKick)
@@ -456,8 +428,6 @@ void Simulation::computeForces(bool checkDisplacements, bool halfKick)
     const int nBlocks = int(blockParticle_.size()) - 1;
     const int* blockParticle = blockParticle_.data();
     const int* blockPair = blockPair_.data();
-    const int* start = list_.incidentStart().data();
-    const int* pairsOf = list_.incidentPairs().data();
 
     double maxOverlap = 0;
 
@@ -512,28 +482,43 @@ void Simulation::computeForces(bool checkDisplacements, bool halfKick)
                 }
             }
 
+            // 1. which listed pairs touch (most do not): a short loop without the
+            //    contact law, the touching ones compacted in pair order without a branch
+            std::vector<int>& contacts = blockContacts_[b];
+            contacts.resize(std::size_t(blockPair[b + 1] - blockPair[b]));
+            int nContacts = 0;
             for (int k = blockPair[b]; k < blockPair[b + 1]; ++k)
             {
                 const int i = first[k], j = second[k];
                 double dx = p.x[i] - p.x[j], dy = p.y[i] - p.y[j], dz = p.z[i] - p.z[j];
                 double shiftVx = 0;
                 box.minimumImage(dx, dy, dz, shiftVx);
-                const double ri = p.radius[i], rj = p.radius[j];
-                const double reach = ri + rj;
-                if (dx*dx + dy*dy + dz*dz >= reach*reach)
+                const double reach = p.radius[i] + p.radius[j];
+                const bool touching = dx*dx + dy*dy + dz*dz < reach*reach;
+                contacts[nContacts] = k;
+                nContacts += touching;
+                if (!touching && active_[k])
                 {
-                    // not touching (most listed pairs): slots and history are cleared
-                    // once, when a contact ends
-                    if (active_[k])
-                    {
-                        active_[k] = 0;
-                        history_[k].touching = false;
-                        history_[k].ft[0] = history_[k].ft[1] = history_[k].ft[2] = 0;
-                        pfx_[k] = pfy_[k] = pfz_[k] = 0;
-                        pcx_[k] = pcy_[k] = pcz_[k] = 0;
-                    }
-                    continue;
+                    // a contact ended: slots and history are cleared once
+                    active_[k] = 0;
+                    history_[k].touching = false;
+                    history_[k].ft[0] = history_[k].ft[1] = history_[k].ft[2] = 0;
+                    pfx_[k] = pfy_[k] = pfz_[k] = 0;
+                    pcx_[k] = pcy_[k] = pcz_[k] = 0;
                 }
+            }
+
+            blockContactCount_[b] = nContacts;
+
+            // 2. the contact law on the touching pairs, in pair order
+            for (int c = 0; c < nContacts; ++c)
+            {
+                const int k = contacts[c];
+                const int i = first[k], j = second[k];
+                double dx = p.x[i] - p.x[j], dy = p.y[i] - p.y[j], dz = p.z[i] - p.z[j];
+                double shiftVx = 0;
+                box.minimumImage(dx, dy, dz, shiftVx);
+                const double ri = p.radius[i], rj = p.radius[j];
                 active_[k] = 1;
                 ContactKinematics kin;
                 kin.r[0] = dx; kin.r[1] = dy; kin.r[2] = dz;
@@ -600,31 +585,45 @@ void Simulation::computeForces(bool checkDisplacements, bool halfKick)
             #pragma omp barrier
         }
 
-        // gather per particle in increasing pair order (blocks > 0)
+        // blocks > 0: each particle's sum, replayed from the contacts' slots in pair order:
+        // first the contacts of lower blocks that reach it (as second particle), then
+        // the block's own contacts (few pairs touch: this is cheap)
         for (int b = tid; b < nBlocks; b += team)
         {
             if (b == 0) continue;
-            for (int i = blockParticle[b]; i < blockParticle[b + 1]; ++i)
+            const int ownBegin = blockParticle[b], ownEnd = blockParticle[b + 1];
+            for (int i = ownBegin; i < ownEnd; ++i)
             {
-                double fx = 0, fy = 0, fz = 0, cx = 0, cy = 0, cz = 0;
-                for (int m = start[i]; m < start[i + 1]; ++m)
+                p.fx[i] = p.fy[i] = p.fz[i] = 0;
+                p.tx[i] = p.ty[i] = p.tz[i] = 0;
+            }
+            for (int lower = 0; lower < b; ++lower)
+            {
+                const int* contacts = blockContacts_[lower].data();
+                for (int c = 0; c < blockContactCount_[lower]; ++c)
                 {
-                    const int code = pairsOf[m];
-                    const int k = code >= 0 ? code : -(code + 1);
-                    if (!active_[k]) continue;
-                    if (code >= 0)
-                    {
-                        fx += pfx_[k]; fy += pfy_[k]; fz += pfz_[k];
-                    }
-                    else
-                    {
-                        fx -= pfx_[k]; fy -= pfy_[k]; fz -= pfz_[k];
-                    }
-                    cx += pcx_[k]; cy += pcy_[k]; cz += pcz_[k];
+                    const int k = contacts[c], j = second[k];
+                    if (j < ownBegin || j >= ownEnd) continue;
+                    p.fx[j] -= pfx_[k]; p.fy[j] -= pfy_[k]; p.fz[j] -= pfz_[k];
+                    p.tx[j] += pcx_[k]; p.ty[j] += pcy_[k]; p.tz[j] += pcz_[k];
                 }
+            }
+            const int* contacts = blockContacts_[b].data();
+            for (int c = 0; c < blockContactCount_[b]; ++c)
+            {
+                const int k = contacts[c], i = first[k], j = second[k];
+                p.fx[i] += pfx_[k]; p.fy[i] += pfy_[k]; p.fz[i] += pfz_[k];
+                p.tx[i] += pcx_[k]; p.ty[i] += pcy_[k]; p.tz[i] += pcz_[k];
+                if (j < ownEnd)
+                {
+                    p.fx[j] -= pfx_[k]; p.fy[j] -= pfy_[k]; p.fz[j] -= pfz_[k];
+                    p.tx[j] += pcx_[k]; p.ty[j] += pcy_[k]; p.tz[j] += pcz_[k];
+                }
+            }
+            for (int i = ownBegin; i < ownEnd; ++i)
+            {
                 const double r = p.radius[i];
-                p.fx[i] = fx; p.fy[i] = fy; p.fz[i] = fz;
-                p.tx[i] = -r*cx; p.ty[i] = -r*cy; p.tz[i] = -r*cz;
+                p.tx[i] = -r*p.tx[i]; p.ty[i] = -r*p.ty[i]; p.tz[i] = -r*p.tz[i];
             }
             kick(b);
         }

@@ -224,6 +224,8 @@ private:
     // per block: collision counts, energies, histogram (merged in block order)
     std::vector<std::vector<long>> blockCounts_, blockHist_;
     std::vector<std::vector<double>> blockEnergy_;
+    std::vector<std::vector<int>> blockContacts_;   // per block: touching pairs this step,
+    std::vector<int> blockContactCount_;            // in pair order, and their number
     std::vector<std::vector<ContactHistory>> wallHistory_;    // per wall, per particle
 
     // synchronised velocity estimates v^{n+1/2} + dt/2 a^n
