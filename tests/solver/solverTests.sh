@@ -738,3 +738,32 @@ test_silo_calibrated()
     grep -E "calibrated D: powerLaw" "$dir/log.segregationDegradationFoam" || return 1
     python3 "$fieldStats" "$dir" bounds --tol 1e-8
 }
+
+# runDEM of the solver's calibrated models (mode tabulated) stores conditions
+# that calibrateGranularMixture recognises: the unit test's runDEM, with the
+# tutorial's DEM settings, adds the phi 0.42 slice (4 conditions) to a
+# synthetic 2x2x2 table; the utility, asked for that slice with the same
+# settings, skips all four (same settings key and layout) and runs nothing
+test_calibrated_run_dem()
+{
+    local dir="$workRoot/calibratedRunDEM"
+    rm -rf "$dir"; cp -r tests/unit/testCase "$dir"
+    blockMesh -case "$dir" > "$dir/log.blockMesh" 2>&1 || return 1
+    sed -e 's/^phi .*/phi (0.42);/' -e 's/^x .*/x (0.2 0.4);/' \
+        -e 's/^T .*/T (0.005 0.02);/' -e 's/^plot .*/plot false;/' \
+        "$calibrationCase/system/calibrationDict" > "$dir/system/calibrationDict"
+    granularModelsTest -case "$dir" --gtest_filter='*RunDEM*' \
+        > "$dir/log.granularModelsTest" 2>&1 \
+        || { tail -30 "$dir/log.granularModelsTest"; return 1; }
+    grep "runDEM" "$dir/log.granularModelsTest"
+    mv "$dir/constant/calibrationRunDEM.h5" "$dir/constant/calibration.h5"
+    calibrateGranularMixture -noFit -case "$dir" \
+        > "$dir/log.calibrateGranularMixture" 2>&1 \
+        || { tail -30 "$dir/log.calibrateGranularMixture"; return 1; }
+    local skipped
+    skipped=$(grep -c "^skipping condition" "$dir/log.calibrateGranularMixture")
+    grep -E "^skipping|^DEM:" "$dir/log.calibrateGranularMixture"
+    [ "$skipped" -eq 4 ] || { echo "the utility skipped $skipped of the 4 runDEM conditions"; return 1; }
+    grep -q "^DEM: 0 conditions run" "$dir/log.calibrateGranularMixture" \
+        || { echo "the utility ran conditions runDEM had stored"; return 1; }
+}

@@ -150,6 +150,7 @@ struct syntheticTable
                 g.setAttribute("targetT", t);
                 g.setAttribute("seed", std::int64_t(seed));
                 g.setAttribute("T", t);
+                g.setAttribute("settingsKey", "synthetic");
                 const sdf::io::Group fine = g.createGroup("species/fine");
                 fine.setAttribute("D", scale*D(p, xc, t));
                 fine.setAttribute("DError", 0.01*D(p, xc, t));
@@ -638,8 +639,15 @@ TEST(diffusivity, tabulatedRunDEMExtendsTheGrid)
     table.D = [](double phi, double x, double T) { return 1e-3*T/phi*(1 + x); };
     const fileName h5(constantFile("calibrationRunDEM.h5"));
     table.write(h5);
+    // Tiny DEM settings, unless the caller put a calibrationDict in place
+    // (the shell test dem/calibratedRunDEM uses the tutorial's)
+    const fileName calibrationDict
+    (
+        testTimePtr->globalPath()/"system"/"calibrationDict"
+    );
+    if (!isFile(calibrationDict))
     {
-        OFstream os(testTimePtr->globalPath()/"system"/"calibrationDict");
+        OFstream os(calibrationDict);
         os  << "FoamFile { version 2.0; format ascii; class dictionary;"
             << " object calibrationDict; }" << nl
             << "replicas (1); particles 100; mode thermostatted;" << nl
