@@ -224,6 +224,15 @@ private:
     // per block: collision counts, energies, histogram (merged in block order)
     std::vector<std::vector<long>> blockCounts_, blockHist_;
     std::vector<std::vector<double>> blockEnergy_;
+    // Near list: per block, the listed pairs (ascending) whose gap was below nearSkin_ at
+    // its build; no other listed pair can touch while the relative displacement bound
+    // nearDrift_ (+ radius growth) stays below nearSkin_, so the per-step distance test
+    // runs over these only. Rebuilt from the Verlet list (a pass over all its pairs).
+    std::vector<std::vector<int>> nearPairs_;
+    bool nearValid_ = false;
+    double nearSkin_ = 0;
+    double nearDrift_ = 0;
+    double nearRadiusGrowth_ = 0;
     std::vector<std::vector<int>> blockContacts_;   // per block: touching pairs this step,
     std::vector<int> blockContactCount_;            // in pair order, and their number
     std::vector<std::vector<ContactHistory>> wallHistory_;    // per wall, per particle
