@@ -707,6 +707,24 @@ TEST(diffusivity, tabulatedRunDEMExtendsTheGrid)
     // Inside the grown grid nothing runs again
     Drun->D(0, T);
     EXPECT_EQ(storedNames().size(), 12u);
+
+    // Nor with the default margin for cells on the grid's edges (phi 0.42,
+    // x 0.2, T 0.005): the margin widens new values, it does not trigger
+    autoPtr<diffusivityModel> DrunMargin
+    (
+        diffusivityModel::New
+        (
+            dictOf
+            (
+                "model calibrated; calibratedCoeffs { mode tabulated;"
+                " calibrationFile calibrationRunDEM.h5;"
+                " outsideEnvelope runDEM; }"
+            ),
+            *testMixturePtr
+        )
+    );
+    DrunMargin->D(0, T);
+    EXPECT_EQ(storedNames().size(), 12u);
 }
 
 
