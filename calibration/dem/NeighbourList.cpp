@@ -127,22 +127,6 @@ void NeighbourList::build(const Particles& p, const PeriodicBox& box, double ski
         second_.insert(second_.end(), secondLocal[t].begin(), secondLocal[t].end());
     }
 
-    // incidence lists (increasing pair index per particle)
-    const int nPairs = int(first_.size());
-    incidentStart_.assign(n + 1, 0);
-    for (int k = 0; k < nPairs; ++k)
-    {
-        ++incidentStart_[first_[k] + 1];
-        ++incidentStart_[second_[k] + 1];
-    }
-    for (int i = 0; i < n; ++i) incidentStart_[i + 1] += incidentStart_[i];
-    incidentPairs_.resize(2*nPairs);
-    std::vector<int> fill(incidentStart_.begin(), incidentStart_.end() - 1);
-    for (int k = 0; k < nPairs; ++k)
-    {
-        incidentPairs_[fill[first_[k]]++] = k;
-        incidentPairs_[fill[second_[k]]++] = -(k + 1);
-    }
     ++builds_;
 }
 

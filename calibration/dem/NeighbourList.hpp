@@ -27,15 +27,11 @@ public:
     const std::vector<int>& first() const { return first_; }
     const std::vector<int>& second() const { return second_; }
 
-    //- Pairs incident to particle p: incidentPairs()[incidentStart()[p] .. incidentStart()[p+1]),
-    //  entry k >= 0 when p is the pair's first particle, -(k + 1) when it is the second
-    const std::vector<int>& incidentStart() const { return incidentStart_; }
-    const std::vector<int>& incidentPairs() const { return incidentPairs_; }
 
     double cutoff() const { return cutoff_; }
 
-    //- Reinstates a pair list from a checkpoint (incidence lists are rebuilt with the next
-    //  build(); only used to carry contact histories over).
+    //- Reinstates a pair list from a checkpoint (only used to carry contact histories
+    //  over at the next build()).
     void restorePairs(std::vector<int> first, std::vector<int> second)
     {
         first_ = std::move(first);
@@ -45,7 +41,6 @@ public:
 
 private:
     std::vector<int> first_, second_;
-    std::vector<int> incidentStart_, incidentPairs_;
     std::vector<int> cellStart_, cellParticles_, particleCell_;
     double cutoff_ = 0;
     long builds_ = 0;

@@ -338,7 +338,7 @@ void Simulation::rebuildNeighbourList()
 {
     const std::vector<int> oldFirst = list_.first();
     const std::vector<int> oldSecond = list_.second();
-    const std::vector<ContactHistory> oldHistory = history_;
+    const std::vector<ContactHistory> oldHistory = std::move(history_);
 
     list_.build(particles_, box_, skin_, nThreads_);
 
