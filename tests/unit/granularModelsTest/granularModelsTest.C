@@ -627,6 +627,75 @@ TEST(kineticSieving, tabulatedEtaInKinematicUnits)
 }
 
 
+TEST(kineticSieving, tabulatedEtaDrift)
+{
+    // The calibrated sieving model in mode tabulated: the drift flux uses
+    // the table's eta of the coarse at the cell's state
+    const auto etaEngine = [](double phi, double x, double T)
+    {
+        return 1e-9*x*std::sqrt(T)*phi;
+    };
+    syntheticTable table;
+    table.D = [](double, double, double) { return 1e-5; };
+    table.eta = etaEngine;
+    table.write(constantFile("calibrationEtaDrift.h5"));
+
+    setFields(0.32, 0.08);   // phi 0.4, x 0.2
+    autoPtr<bulkFlowModel> flow
+    (
+        bulkFlowModel::New(dictOf("model prescribed;"), *testMixturePtr)
+    );
+    autoPtr<granularTemperatureModel> temp
+    (
+        granularTemperatureModel::New
+        (
+            dictOf("model savageJeffrey; savageJeffreyCoeffs { R 1; }"),
+            *testMixturePtr
+        )
+    );
+    temp->correct(flow());
+    autoPtr<kineticSievingModel> sieving
+    (
+        kineticSievingModel::New
+        (
+            dictOf
+            (
+                "model calibrated; calibratedCoeffs { Umin 1e-9;"
+                " mode tabulated; calibrationFile calibrationEtaDrift.h5;"
+                " outsideEnvelope extrapolate; }"
+            ),
+            *testMixturePtr,
+            flow()
+        )
+    );
+    sieving->correct();
+    const surfaceScalarField W(sieving->driftFlux(0, 1));
+
+    const calibrationTable etaTable
+    (
+        *testMixturePtr,
+        dictOf("calibrationFile calibrationEtaDrift.h5;"),
+        "eta"
+    );
+    const scalar T = 3*sqr(1.2e-3*gammaDot0);
+    const scalar eta = etaTable.value(0.4, 0.2, T);
+    EXPECT_GT(eta, 0);
+
+    const labelUList& own = testMeshPtr->owner();
+    const labelUList& nei = testMeshPtr->neighbour();
+    const volVectorField& C = testMeshPtr->C();
+    forAll(W, facei)
+    {
+        const scalar dLnU =
+            Foam::log(C[nei[facei]].z()/C[own[facei]].z());
+        const scalar expected =
+            -eta*dLnU*testMeshPtr->deltaCoeffs()[facei]
+           *testMeshPtr->magSf()[facei];
+        EXPECT_NEAR(W[facei], expected, 1e-10*mag(eta) + 1e-18);
+    }
+}
+
+
 TEST(diffusivity, tabulatedRunDEMExtendsTheGrid)
 {
     // A 2 x 2 x 2 grid; the cells reach phi 0.42 > 0.35: runDEM runs the
