@@ -11,8 +11,6 @@
 #include "io/Hdf5File.hpp"
 #include "fit/SievingNormalisation.hpp"
 
-#include <gsl/gsl_interp.h>
-
 #include <cmath>
 #include <cstdio>
 #include <map>
@@ -333,6 +331,8 @@ void Foam::calibrationTable::read()
         }
     }
     conditions_ = label(stored.size());
+
+    prepareInterpolation();
 }
 
 
@@ -357,14 +357,54 @@ Foam::calibrationTable::TRange() const
 }
 
 
+const gsl_interp_type* Foam::calibrationTable::interpType(const label n) const
+{
+    return
+        interpolation_ == interpolationType::steffen && n >= 3
+      ? gsl_interp_steffen
+      : gsl_interp_linear;
+}
+
+
+void Foam::calibrationTable::prepareInterpolation()
+{
+    const label nPhi = phi_.size(), nx = x_.size(), nT = T_.size();
+
+    TLines_.clear();
+    if (nT >= 2)
+    {
+        for (label line = 0; line < nPhi*nx; ++line)
+        {
+            TLines_.emplace_back(gsl_interp_alloc(interpType(nT), nT));
+            gsl_interp_init
+            (
+                TLines_.back().get(),
+                lnT_.cdata(),
+                values_.cdata() + line*nT,
+                nT
+            );
+        }
+    }
+    xWork_.reset(nx >= 2 ? gsl_interp_alloc(interpType(nx), nx) : nullptr);
+    phiWork_.reset
+    (
+        nPhi >= 2 ? gsl_interp_alloc(interpType(nPhi), nPhi) : nullptr
+    );
+    alongX_.setSize(nx);
+    alongPhi_.setSize(nPhi);
+}
+
+
 Foam::scalar Foam::calibrationTable::interpolate1
 (
-    const scalarList& axis,
-    const scalarList& values,
-    const scalar q
-) const
+    const scalar* axis,
+    const scalar* values,
+    const label n,
+    const scalar q,
+    gsl_interp* interp,
+    const bool init
+)
 {
-    const label n = axis.size();
     if (n == 1)
     {
         return values[0];
@@ -380,17 +420,11 @@ Foam::scalar Foam::calibrationTable::interpolate1
           + (q - axis[a])*(values[a + 1] - values[a])/(axis[a + 1] - axis[a]);
     }
 
-    // Steffen's monotone cubic needs three points; two: a straight line
-    const gsl_interp_type* type =
-        interpolation_ == interpolationType::steffen && n >= 3
-      ? gsl_interp_steffen
-      : gsl_interp_linear;
-
-    gsl_interp* interp = gsl_interp_alloc(type, n);
-    gsl_interp_init(interp, axis.cdata(), values.cdata(), n);
-    const scalar v = gsl_interp_eval(interp, axis.cdata(), values.cdata(), q, nullptr);
-    gsl_interp_free(interp);
-    return v;
+    if (init)
+    {
+        gsl_interp_init(interp, axis, values, n);
+    }
+    return gsl_interp_eval(interp, axis, values, q, nullptr);
 }
 
 
@@ -409,21 +443,30 @@ Foam::scalar Foam::calibrationTable::value
     const scalar lnT = Foam::log(T);
 
     const label nPhi = phi_.size(), nx = x_.size(), nT = T_.size();
-    scalarList alongT(nT), alongX(nx), alongPhi(nPhi);
     for (label i = 0; i < nPhi; ++i)
     {
         for (label j = 0; j < nx; ++j)
         {
-            const label start = (i*nx + j)*nT;
-            for (label l = 0; l < nT; ++l)
-            {
-                alongT[l] = values_[start + l];
-            }
-            alongX[j] = interpolate1(lnT_, alongT, lnT);
+            const label line = i*nx + j;
+            alongX_[j] = interpolate1
+            (
+                lnT_.cdata(),
+                values_.cdata() + line*nT,
+                nT,
+                lnT,
+                nT >= 2 ? TLines_[line].get() : nullptr,
+                false
+            );
         }
-        alongPhi[i] = interpolate1(x_, alongX, x);
+        alongPhi_[i] = interpolate1
+        (
+            x_.cdata(), alongX_.cdata(), nx, x, xWork_.get(), true
+        );
     }
-    const scalar v = interpolate1(lnPhi_, alongPhi, lnPhi);
+    const scalar v = interpolate1
+    (
+        lnPhi_.cdata(), alongPhi_.cdata(), nPhi, lnPhi, phiWork_.get(), true
+    );
     return logValues_ ? Foam::exp(v) : v;
 }
 
