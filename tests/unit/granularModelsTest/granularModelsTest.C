@@ -446,6 +446,42 @@ TEST(diffusivity, tabulatedReproducesPowerLaw)
 }
 
 
+TEST(diffusivity, tabulatedSinglePointAxesAreConstant)
+{
+    // One x and one T: the table is constant along them (even when
+    // extrapolating), ln-linear in phi
+    const auto Dexact = [](double phi, double, double)
+    {
+        return 1e-4*std::pow(phi, -1.5);
+    };
+    syntheticTable table;
+    table.x = {0.3};
+    table.T = {0.01};
+    table.D = Dexact;
+    table.write(constantFile("calibrationSinglePoint.h5"));
+    autoPtr<diffusivityModel> Dtab
+    (
+        diffusivityModel::New
+        (
+            dictOf
+            (
+                "model calibrated; calibratedCoeffs { mode tabulated;"
+                " calibrationFile calibrationSinglePoint.h5;"
+                " outsideEnvelope extrapolate; }"
+            ),
+            *testMixturePtr
+        )
+    );
+    setFields(0.3*0.9, 0.3*0.1);   // phi 0.3, x 0.1
+    const scalar expected = Dexact(0.3, 0, 0);
+    for (const scalar T : {0.001, 0.01, 0.05})
+    {
+        EXPECT_NEAR(Dtab->D(0, uniformT(T))()[0], expected, 1e-10*expected)
+            << "T " << T;
+    }
+}
+
+
 TEST(diffusivity, tabulatedOutsideTheGrid)
 {
     const auto Dexact = [](double phi, double x, double T)
