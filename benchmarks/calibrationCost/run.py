@@ -277,17 +277,23 @@ def main():
             f.write("%g %s\n" % (t, " ".join("%.6f" % r["history"][i] for r in rows)))
     if shutil.which("gnuplot"):
         png = os.path.join(OUT, "calibrationCost.png")
-        gp = """set terminal pngcairo size 1200,500
+        gp = """set terminal pngcairo size 1500,450 noenhanced
 set output '%s'
-set multiplot layout 1,2
+set multiplot layout 1,3
 set logscale x
 set xlabel 'calibration CPU time [s] (one core)'
 set ylabel 'outlet coarse mass fraction'
-set key top right
+set key top left
 set title 'uncertainty left in the silo2D outlet composition'
-plot '%s' using 5:7 with linespoints pt 7 title 'sigma_M (parameters +-1 sigma)', \\
-     '' using 5:8 with linespoints pt 5 title 'max |M - M_ref|', \\
+plot '%s' using 5:7 with points pt 7 ps 1.5 title 'sigma_M (parameters +-1 sigma)', \\
+     '' using 5:8 with points pt 5 ps 1.5 title 'max |M - M_ref|', \\
      '' using 5:7:1 with labels offset 0,1 font ',8' notitle
+set ylabel 'fitted phi exponent b'
+set key bottom left
+set title 'phi exponent of D = A (1+x)^a T^m phi^b'
+plot '%s' using 5:12:13 with yerrorbars pt 7 title 'DEM fit +- 1 s.e.', \\
+     -1.5 with lines dt 2 title 'seed paper: -1.5', \\
+     '' using 5:12:1 with labels offset 0,1 font ',8' notitle
 unset logscale x
 set xlabel 't [s]'
 set ylabel 'coarse mass fraction at the outlet'
@@ -295,7 +301,8 @@ set key top left
 set title 'outlet composition with each calibration'
 plot for [i=2:%d] '%s' using 1:i with lines title columnhead(i)
 unset multiplot
-""" % (png, os.path.join(OUT, "results.dat"), len(rows) + 1, os.path.join(OUT, "histories.dat"))
+""" % (png, os.path.join(OUT, "results.dat"), os.path.join(OUT, "results.dat"),
+       len(rows) + 1, os.path.join(OUT, "histories.dat"))
         # columnhead needs the header as a plain first line
         hist = os.path.join(OUT, "histories.dat")
         text = open(hist).read().replace("# t ", "t ", 1)
