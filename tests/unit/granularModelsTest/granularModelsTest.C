@@ -833,6 +833,40 @@ TEST(diffusivity, tabulatedRunDEMExtendsTheGrid)
 }
 
 
+TEST(diffusivity, tabulatedRunDEMBadLimits)
+{
+    syntheticTable table;
+    table.D = [](double, double, double) { return 1e-5; };
+    table.write(constantFile("calibrationRunDEMLimits.h5"));
+    for (const char* bad :
+        {"runDEMMaxPhi 0.7;", "runDEMMinT 0;", "runDEMMargin -1;"})
+    {
+        expectFoamError
+        (
+            [bad]
+            {
+                diffusivityModel::New
+                (
+                    dictOf
+                    (
+                        (
+                            std::string
+                            (
+                                "model calibrated; calibratedCoeffs"
+                                " { mode tabulated; outsideEnvelope runDEM;"
+                                " calibrationFile calibrationRunDEMLimits.h5; "
+                            ) + bad + " }"
+                        ).c_str()
+                    ),
+                    *testMixturePtr
+                );
+            },
+            {"runDEMMaxPhi", "runDEMMinT", "runDEMMargin"}
+        );
+    }
+}
+
+
 // * * * * * * * * * * * * * Segregation fluxes * * * * * * * * * * * * * * //
 
 TEST(percolation, grayThorntonDriftAlongGravity)
