@@ -378,7 +378,7 @@ test_calibration_resume()
 test_calibration_bad_input()
 {
     local dir="$workRoot/calibrationBad" kind
-    local kinds="unknownCoefficient unknownLaw emptyPhi jammedPhi negativeT xOutside textStore foreignHdf5"
+    local kinds="unknownCoefficient unknownLaw emptyPhi invertedT jammedPhi negativeT xOutside textStore foreignHdf5"
     [ -f "$workRoot/calibration/constant/calibration.h5" ] && kinds="$kinds truncatedStore settingsChanged"
     for kind in $kinds
     do
@@ -388,6 +388,7 @@ test_calibration_bad_input()
             unknownCoefficient) foamDictionary -entry coefficients -set "(D viscosity)" "$d" > /dev/null; expect="viscosity" ;;
             unknownLaw) foamDictionary -entry laws -set "(powerLaw magic)" "$d" > /dev/null; expect="magic" ;;
             emptyPhi) foamDictionary -entry phi -set "()" "$d" > /dev/null; expect="'phi'" ;;
+            invertedT) foamDictionary -entry T -set "(0.02 0.005)" "$d" > /dev/null; expect="increasing order" ;;
             jammedPhi) foamDictionary -entry phi -set "(0.3 0.7)" "$d" > /dev/null; expect="'phi'" ;;
             negativeT) foamDictionary -entry T -set "(0.01 -0.01)" "$d" > /dev/null; expect="'T'" ;;
             xOutside) foamDictionary -entry x -set "(0.2 1.5)" "$d" > /dev/null; expect="'x'" ;;

@@ -177,6 +177,20 @@ scalarList readEnvelopeList
                 << " appears twice" << nl << exit(FatalIOError);
         }
     }
+    // An envelope axis is a grid line (the tabulated models interpolate
+    // along it): values in increasing order, so an inverted range is caught
+    for (label i = 1; i < values.size(); ++i)
+    {
+        if (!(values[i] > values[i - 1]))
+        {
+            FatalIOErrorInFunction(dict)
+                << "Envelope entry '" << key << "' (" << meaning.c_str()
+                << ") is not in increasing order (inverted envelope?): "
+                << values << nl
+                << "    give the values from the smallest to the largest"
+                << nl << exit(FatalIOError);
+        }
+    }
     return values;
 }
 
