@@ -70,6 +70,7 @@ Description
 #include "ITstream.H"
 
 #include "demDictionary.H"
+#include "calibrationStore.H"
 #include "io/Hdf5File.hpp"
 #include "fit/FitData.hpp"
 #include "fit/Laws.hpp"
@@ -102,7 +103,7 @@ using namespace Foam;
 namespace
 {
 
-const char* const contentName = "calibrateGranularMixture conditions";
+const char* const contentName = calibrationStore::contentName();
 
 //- Jamming limit of the envelope (random close packing)
 const scalar phiJamming = 0.64;
@@ -123,14 +124,6 @@ std::string fmt(double v)
 {
     char buf[64];
     std::snprintf(buf, sizeof(buf), "%.6g", v);
-    return buf;
-}
-
-
-std::string fmt10(double v)
-{
-    char buf[64];
-    std::snprintf(buf, sizeof(buf), "%.10g", v);
     return buf;
 }
 
@@ -788,32 +781,14 @@ Setup readSetup
     b.simulation.mode = sdf::dem::cellModeFromName(mode);
     demDictionary::readRunControls(dict, b);
     b.progressEvery = 0;
-    const sdf::dem::SimulationSettings& sim = b.simulation;
-    const sdf::dem::ContactSettings& c = sim.contact;
-    const dictionary& contact = dict.subOrEmptyDict("contact");
-
     // Fingerprint of the DEM settings (everything but the condition): a
     // stored condition is reused only if it was run with the same settings.
-    std::ostringstream key;
-    key << "species";
-    for (const auto& sp : s.species)
-    {
-        key << " " << sp.name << ":" << fmt10(sp.diameter) << ":" << fmt10(sp.density);
-    }
-    key << "; particles " << b.particles
-        << "; contact " << contact.getOrDefault<word>("model", "linearSpringDashpot")
-        << " e " << fmt10(c.restitution) << " mu " << fmt10(c.friction)
-        << " kn " << fmt10(c.normalStiffness)
-        << " kt/kn " << fmt10(c.tangentialStiffnessRatio)
-        << " gt/gn " << fmt10(c.tangentialDampingRatio)
-        << " E " << fmt10(c.youngsModulus) << " nu " << fmt10(c.poissonRatio)
-        << "; timeStep " << fmt10(sim.timeStep)
-        << "; thermostatTime " << fmt10(sim.thermostatTime)
-        << "; equilibrationTime " << fmt10(b.equilibrationTime)
-        << "; maxEquilibrationTime " << fmt10(b.maxEquilibrationTime)
-        << "; samplingTime " << fmt10(b.samplingTime)
-        << "; sampleEvery " << b.sampleEvery << "; blocks " << b.blocks;
-    s.settingsKey = key.str();
+    s.settingsKey = calibrationStore::settingsKey
+    (
+        b,
+        dict.subOrEmptyDict("contact")
+            .getOrDefault<word>("model", "linearSpringDashpot")
+    );
 
     return s;
 }
@@ -829,7 +804,7 @@ struct ConditionSpec
 
 std::string conditionName(scalar phi, scalar x, scalar T, label seed)
 {
-    return "phi" + fmt(phi) + "_x" + fmt(x) + "_T" + fmt(T) + "_seed" + std::to_string(seed);
+    return calibrationStore::conditionName(phi, x, T, seed);
 }
 
 
@@ -892,57 +867,15 @@ void storeCondition
     const sdf::dem::CellRunResult& r
 )
 {
-    const bool exists = isFile(h5);
-    sdf::io::AtomicFile out =
-        exists ? sdf::io::AtomicFile::update(h5) : sdf::io::AtomicFile::create(h5);
-    const sdf::io::Group root = out.root();
-    if (!exists)
-    {
-        root.setAttribute("content", contentName);
-        root.setAttribute("fineSpecies", setup.species[0].name);
-        root.setAttribute("coarseSpecies", setup.species[1].name);
-    }
-    const sdf::io::Group g = root.createGroup("conditions/" + cond.name);
-    // inputs
-    g.setAttribute("phi", double(cond.phi));
-    g.setAttribute("x", double(cond.x));
-    g.setAttribute("targetT", double(cond.T));
-    g.setAttribute("seed", std::int64_t(cond.seed));
-    g.setAttribute("particles", std::int64_t(r.settings.particles));
-    g.setAttribute("settingsKey", setup.settingsKey);
-    // results
-    g.setAttribute("T", r.temperature);
-    g.setAttribute("TError", r.temperatureError);
-    g.setAttribute("equilibrated", std::int64_t(r.equilibrated ? 1 : 0));
-    g.setAttribute("equilibrationTime", r.equilibrationTime);
-    g.setAttribute("timeStep", r.timeStep);
-    g.setAttribute("boxLength", r.boxLength);
-    g.setAttribute("steps", std::int64_t(r.steps));
-    for (std::size_t i = 0; i < r.species.size(); ++i)
-    {
-        const sdf::dem::SpeciesTransport& st = r.species[i];
-        const sdf::io::Group sg = g.createGroup("species/" + st.name);
-        sg.setAttribute("role", i == 0 ? "fine" : "coarse");
-        sg.setAttribute("d", setup.species[i].diameter);
-        sg.setAttribute("count", std::int64_t(st.count));
-        sg.setAttribute("T", st.temperature);
-        sg.setAttribute("D", st.greenKubo.integral.value);
-        sg.setAttribute("DError", st.greenKubo.integral.standardError);
-        sg.setAttribute("DPlateauFound", std::int64_t(st.greenKubo.plateauFound ? 1 : 0));
-        sg.setAttribute("DMsd", st.diffusivityMsd.value);
-        sg.setAttribute("DMsdError", st.diffusivityMsd.standardError);
-        if (i < r.kineticSieving.size())
-        {
-            sg.setAttribute("eta", r.kineticSieving[i].value);
-            sg.setAttribute("etaError", r.kineticSieving[i].standardError);
-        }
-    }
-    // timings: the only attributes that differ between identical runs
-    const sdf::io::Group t = g.createGroup("timing");
-    t.setAttribute("wallSeconds", r.wallSeconds);
-    t.setAttribute("cpuSeconds", r.cpuSeconds);
-    t.setAttribute("particleStepsPerSecond", r.particleStepsPerSecond);
-    out.commit();
+    calibrationStore::storeCondition
+    (
+        h5,
+        setup.species[0].name,
+        setup.species[1].name,
+        setup.settingsKey,
+        {cond.name, cond.phi, cond.x, cond.T, cond.seed},
+        r
+    );
 }
 
 

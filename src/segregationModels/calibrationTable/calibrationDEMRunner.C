@@ -12,6 +12,7 @@
 #include "Pstream.H"
 
 #include "demDictionary.H"
+#include "calibrationStore.H"
 #include "CellRun.hpp"
 #include "io/Hdf5File.hpp"
 
@@ -48,13 +49,6 @@ std::string fmtList(const Foam::scalarList& values)
     return text + ")";
 }
 
-std::string fmt10(const double v)
-{
-    char buf[64];
-    std::snprintf(buf, sizeof(buf), "%.10g", v);
-    return buf;
-}
-
 
 //- v rounded to the 6 significant digits of the condition names, so that
 //  a condition's name and its phi/x/targetT attributes say the same;
@@ -72,21 +66,6 @@ double roundOutward(const double v, const bool up)
         r = std::strtod(fmt(up ? v*(1 + 5e-6) : v*(1 - 5e-6)).c_str(), nullptr);
     }
     return r;
-}
-
-
-//- The utility's condition group name (calibrateGranularMixture.C)
-std::string conditionName
-(
-    const double phi,
-    const double x,
-    const double T,
-    const Foam::label seed
-)
-{
-    return
-        "phi" + fmt(phi) + "_x" + fmt(x) + "_T" + fmt(T)
-      + "_seed" + std::to_string(seed);
 }
 
 
@@ -188,34 +167,14 @@ Foam::calibrationDEMRunner::calibrationDEMRunner
             << exit(FatalIOError);
     }
 
-    // Fingerprint of the DEM settings: a copy of calibrateGranularMixture's
-    // (readSetup), so that the utility and runDEM recognise each other's
-    // stored conditions; keep the two in step
-    const sdf::dem::SimulationSettings& sim = b.simulation;
-    const sdf::dem::ContactSettings& c = sim.contact;
-    const dictionary& contact = dict.subOrEmptyDict("contact");
-    std::ostringstream key;
-    key << "species";
-    for (const auto& sp : b.species)
-    {
-        key << " " << sp.name << ":" << fmt10(sp.diameter) << ":"
-            << fmt10(sp.density);
-    }
-    key << "; particles " << b.particles
-        << "; contact "
-        << contact.getOrDefault<word>("model", "linearSpringDashpot")
-        << " e " << fmt10(c.restitution) << " mu " << fmt10(c.friction)
-        << " kn " << fmt10(c.normalStiffness)
-        << " kt/kn " << fmt10(c.tangentialStiffnessRatio)
-        << " gt/gn " << fmt10(c.tangentialDampingRatio)
-        << " E " << fmt10(c.youngsModulus) << " nu " << fmt10(c.poissonRatio)
-        << "; timeStep " << fmt10(sim.timeStep)
-        << "; thermostatTime " << fmt10(sim.thermostatTime)
-        << "; equilibrationTime " << fmt10(b.equilibrationTime)
-        << "; maxEquilibrationTime " << fmt10(b.maxEquilibrationTime)
-        << "; samplingTime " << fmt10(b.samplingTime)
-        << "; sampleEvery " << b.sampleEvery << "; blocks " << b.blocks;
-    settingsKey_ = key.str();
+    // Fingerprint of the DEM settings, as calibrateGranularMixture's: each
+    // recognises the other's stored conditions
+    settingsKey_ = calibrationStore::settingsKey
+    (
+        b,
+        dict.subOrEmptyDict("contact")
+            .getOrDefault<word>("model", "linearSpringDashpot")
+    );
 
     Info<< "    calibrated: outside the grid, runDEM with the DEM settings of "
         << dict.objectPath() << " (" << b.particles << " particles, sampling "
@@ -240,7 +199,8 @@ Foam::label Foam::calibrationDEMRunner::runCondition
     label ran = 0;
     for (const label seed : replicas_)
     {
-        const std::string name = conditionName(phi, x, T, seed);
+        const std::string name =
+            calibrationStore::conditionName(phi, x, T, seed);
 
         // Stored already (by the utility or another calibrated model)?
         if (isFile(file_))
@@ -297,63 +257,18 @@ Foam::label Foam::calibrationDEMRunner::runCondition
         }
 
         // Stored at once, atomically, as calibrateGranularMixture stores a
-        // condition (its storeCondition): copy to <file>.tmp, add, rename
+        // condition
         try
         {
-            const bool exists = isFile(file_);
-            sdf::io::AtomicFile out =
-                exists
-              ? sdf::io::AtomicFile::update(file_)
-              : sdf::io::AtomicFile::create(file_);
-            const sdf::io::Group root = out.root();
-            if (!exists)
-            {
-                root.setAttribute("content", calibrationTable::contentName);
-                root.setAttribute("fineSpecies", std::string(fineName_));
-                root.setAttribute("coarseSpecies", std::string(coarseName_));
-            }
-            const sdf::io::Group g = root.createGroup("conditions/" + name);
-            g.setAttribute("phi", double(phi));
-            g.setAttribute("x", double(x));
-            g.setAttribute("targetT", double(T));
-            g.setAttribute("seed", std::int64_t(seed));
-            g.setAttribute("particles", std::int64_t(r.settings.particles));
-            g.setAttribute("settingsKey", settingsKey_);
-            g.setAttribute("T", r.temperature);
-            g.setAttribute("TError", r.temperatureError);
-            g.setAttribute("equilibrated", std::int64_t(r.equilibrated ? 1 : 0));
-            g.setAttribute("equilibrationTime", r.equilibrationTime);
-            g.setAttribute("timeStep", r.timeStep);
-            g.setAttribute("boxLength", r.boxLength);
-            g.setAttribute("steps", std::int64_t(r.steps));
-            for (std::size_t i = 0; i < r.species.size(); ++i)
-            {
-                const sdf::dem::SpeciesTransport& st = r.species[i];
-                const sdf::io::Group sg = g.createGroup("species/" + st.name);
-                sg.setAttribute("role", i == 0 ? "fine" : "coarse");
-                sg.setAttribute("d", base_->species[i].diameter);
-                sg.setAttribute("count", std::int64_t(st.count));
-                sg.setAttribute("T", st.temperature);
-                sg.setAttribute("D", st.greenKubo.integral.value);
-                sg.setAttribute("DError", st.greenKubo.integral.standardError);
-                sg.setAttribute
-                (
-                    "DPlateauFound",
-                    std::int64_t(st.greenKubo.plateauFound ? 1 : 0)
-                );
-                sg.setAttribute("DMsd", st.diffusivityMsd.value);
-                sg.setAttribute("DMsdError", st.diffusivityMsd.standardError);
-                if (i < r.kineticSieving.size())
-                {
-                    sg.setAttribute("eta", r.kineticSieving[i].value);
-                    sg.setAttribute("etaError", r.kineticSieving[i].standardError);
-                }
-            }
-            const sdf::io::Group t = g.createGroup("timing");
-            t.setAttribute("wallSeconds", r.wallSeconds);
-            t.setAttribute("cpuSeconds", r.cpuSeconds);
-            t.setAttribute("particleStepsPerSecond", r.particleStepsPerSecond);
-            out.commit();
+            calibrationStore::storeCondition
+            (
+                file_,
+                fineName_,
+                coarseName_,
+                settingsKey_,
+                {name, phi, x, T, seed},
+                r
+            );
         }
         catch (const std::exception& err)
         {

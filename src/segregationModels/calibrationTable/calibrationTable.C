@@ -7,6 +7,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "calibrationTable.H"
+#include "calibrationStore.H"
 
 #include "io/Hdf5File.hpp"
 #include "fit/SievingNormalisation.hpp"
@@ -25,7 +26,7 @@ Foam::calibrationTable::interpolationTypeNames
 });
 
 const char* const Foam::calibrationTable::contentName =
-    "calibrateGranularMixture conditions";
+    Foam::calibrationStore::contentName();
 
 
 namespace
