@@ -765,37 +765,53 @@ void Simulation::step()
 
     // one pass: kick, drift, Lees-Edwards wrap (with the offset at the new time),
     // synchronised velocity estimate, largest peculiar displacement since the last build
+    // and in this step
     box_.advanceShear(dt);
     const PeriodicBox box = box_;
     double maxDisp2 = 0, maxStep2 = 0;
-    #pragma omp parallel for schedule(static) num_threads(nThreads_) reduction(max:maxDisp2, maxStep2)
-    for (int i = 0; i < n; ++i)
+    // the force pass's particle blocks: each thread drifts the particles it integrated and
+    // will integrate again, so their cache lines stay in its core
+    if (blockParticle_.size() < 2 || blockParticle_.back() != n) partitionWork();
+    const int nBlocks = int(blockParticle_.size()) - 1;
+    const int* blockParticle = blockParticle_.data();
+    #pragma omp parallel num_threads(nThreads_) reduction(max:maxDisp2, maxStep2)
     {
-        const double im = p.invMass[i], ii = p.invInertia[i];
-        const double fxm = h*p.fx[i]*im, fym = h*p.fy[i]*im, fzm = h*p.fz[i]*im;
-        const double txi = h*p.tx[i]*ii, tyi = h*p.ty[i]*ii, tzi = h*p.tz[i]*ii;
-        p.vx[i] += fxm; p.vy[i] += fym; p.vz[i] += fzm;
-        p.wx[i] += txi; p.wy[i] += tyi; p.wz[i] += tzi;
+        int tid = 0, team = 1;
+#ifdef _OPENMP
+        tid = omp_get_thread_num();
+        team = omp_get_num_threads();
+#endif
+        for (int b = tid; b < nBlocks; b += team)
+        {
+            for (int i = blockParticle[b]; i < blockParticle[b + 1]; ++i)
+            {
+                const double im = p.invMass[i], ii = p.invInertia[i];
+                const double fxm = h*p.fx[i]*im, fym = h*p.fy[i]*im, fzm = h*p.fz[i]*im;
+                const double txi = h*p.tx[i]*ii, tyi = h*p.ty[i]*ii, tzi = h*p.tz[i]*ii;
+                p.vx[i] += fxm; p.vy[i] += fym; p.vz[i] += fzm;
+                p.wx[i] += txi; p.wy[i] += tyi; p.wz[i] += tzi;
 
-        const double ddx = dt*p.vx[i], ddy = dt*p.vy[i], ddz = dt*p.vz[i];
-        const double peculiarDdx = ddx - dt*shearRate*(p.y[i] - yMid);
-        const double step2 = peculiarDdx*peculiarDdx + ddy*ddy + ddz*ddz;
-        if (step2 > maxStep2) maxStep2 = step2;
-        dispX_[i] += peculiarDdx;
-        dispY_[i] += ddy;
-        dispZ_[i] += ddz;
-        const double d2 = dispX_[i]*dispX_[i] + dispY_[i]*dispY_[i] + dispZ_[i]*dispZ_[i];
-        if (d2 > maxDisp2) maxDisp2 = d2;
-        p.ux[i] += ddx; p.uy[i] += ddy; p.uz[i] += ddz;
-        p.x[i] += ddx; p.y[i] += ddy; p.z[i] += ddz;
+                const double ddx = dt*p.vx[i], ddy = dt*p.vy[i], ddz = dt*p.vz[i];
+                const double peculiarDdx = ddx - dt*shearRate*(p.y[i] - yMid);
+                const double step2 = peculiarDdx*peculiarDdx + ddy*ddy + ddz*ddz;
+                if (step2 > maxStep2) maxStep2 = step2;
+                dispX_[i] += peculiarDdx;
+                dispY_[i] += ddy;
+                dispZ_[i] += ddz;
+                const double d2 = dispX_[i]*dispX_[i] + dispY_[i]*dispY_[i] + dispZ_[i]*dispZ_[i];
+                if (d2 > maxDisp2) maxDisp2 = d2;
+                p.ux[i] += ddx; p.uy[i] += ddy; p.uz[i] += ddz;
+                p.x[i] += ddx; p.y[i] += ddy; p.z[i] += ddz;
 
-        box.wrap(p.x[i], p.y[i], p.z[i], p.vx[i]);
-        svx_[i] = p.vx[i] + fxm;
-        svy_[i] = p.vy[i] + fym;
-        svz_[i] = p.vz[i] + fzm;
-        swx_[i] = p.wx[i] + txi;
-        swy_[i] = p.wy[i] + tyi;
-        swz_[i] = p.wz[i] + tzi;
+                box.wrap(p.x[i], p.y[i], p.z[i], p.vx[i]);
+                svx_[i] = p.vx[i] + fxm;
+                svy_[i] = p.vy[i] + fym;
+                svz_[i] = p.vz[i] + fzm;
+                swx_[i] = p.wx[i] + txi;
+                swy_[i] = p.wy[i] + tyi;
+                swz_[i] = p.wz[i] + tzi;
+            }
+        }
     }
     time_ += dt;
     timeSinceBuild_ += dt;
