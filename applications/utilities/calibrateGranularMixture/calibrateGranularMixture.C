@@ -129,6 +129,37 @@ std::string fmt(double v)
 
 
 //- A list entry of the envelope: present, non-empty, every value in (lo, hi)
+//- Candidate laws of one coefficient: entry `key` (default: all valid ones),
+//  not empty, every name known
+wordList readLawList
+(
+    const dictionary& dict,
+    const word& key,
+    const wordList& valid,
+    const word& coefficient
+)
+{
+    const wordList laws(dict.getOrDefault<wordList>(key, valid));
+    if (laws.empty())
+    {
+        FatalIOErrorInFunction(dict)
+            << "Entry '" << key << "' is empty; valid laws for "
+            << coefficient << ": " << valid << nl << exit(FatalIOError);
+    }
+    for (const word& l : laws)
+    {
+        if (!valid.found(l))
+        {
+            FatalIOErrorInFunction(dict)
+                << "Unknown law '" << l << "' in entry '" << key << "'" << nl
+                << "    valid laws for " << coefficient << ": " << valid << nl
+                << exit(FatalIOError);
+        }
+    }
+    return laws;
+}
+
+
 scalarList readEnvelopeList
 (
     const dictionary& dict,
@@ -722,40 +753,8 @@ Setup readSetup
     {
         s.coefficients = fromCase->coefficients;
     }
-    s.laws = dict.getOrDefault<wordList>("laws", validDLaws);
-    if (s.laws.empty())
-    {
-        FatalIOErrorInFunction(dict)
-            << "Entry 'laws' is empty; valid laws for D: " << validDLaws
-            << nl << exit(FatalIOError);
-    }
-    for (const word& l : s.laws)
-    {
-        if (!validDLaws.found(l))
-        {
-            FatalIOErrorInFunction(dict)
-                << "Unknown law '" << l << "' in entry 'laws'" << nl
-                << "    valid laws for D: " << validDLaws << nl
-                << exit(FatalIOError);
-        }
-    }
-    s.etaLaws = dict.getOrDefault<wordList>("etaLaws", validEtaLaws);
-    if (s.etaLaws.empty())
-    {
-        FatalIOErrorInFunction(dict)
-            << "Entry 'etaLaws' is empty; valid laws for eta: " << validEtaLaws
-            << nl << exit(FatalIOError);
-    }
-    for (const word& l : s.etaLaws)
-    {
-        if (!validEtaLaws.found(l))
-        {
-            FatalIOErrorInFunction(dict)
-                << "Unknown law '" << l << "' in entry 'etaLaws'" << nl
-                << "    valid laws for eta: " << validEtaLaws << nl
-                << exit(FatalIOError);
-        }
-    }
+    s.laws = readLawList(dict, "laws", validDLaws, "D");
+    s.etaLaws = readLawList(dict, "etaLaws", validEtaLaws, "eta");
     s.etaDiameterPower = dict.getOrDefault<label>("etaDiameterPower", 1);
     s.fitMaxIterations = dict.getOrDefault<label>("fitMaxIterations", 2000);
     if (s.fitMaxIterations < 1)
