@@ -16,6 +16,22 @@ void Particles::resize(std::size_t n)
     species.resize(n, 0);
 }
 
+void Particles::reorder(const std::vector<int>& order)
+{
+    const std::size_t n = size();
+    std::vector<double> buffer(n);
+    for (auto* a : {&x, &y, &z, &ux, &uy, &uz, &vx, &vy, &vz, &wx, &wy, &wz,
+                    &fx, &fy, &fz, &tx, &ty, &tz, &radius, &mass, &inertia,
+                    &invMass, &invInertia})
+    {
+        for (std::size_t k = 0; k < n; ++k) buffer[k] = (*a)[order[k]];
+        a->swap(buffer);
+    }
+    std::vector<int> speciesBuffer(n);
+    for (std::size_t k = 0; k < n; ++k) speciesBuffer[k] = species[order[k]];
+    species.swap(speciesBuffer);
+}
+
 void Particles::add(double px, double py, double pz, double r, double m, int speciesId)
 {
     const std::size_t i = size();

@@ -36,6 +36,9 @@ struct Particles
 
     //- Sets radius and derived mass and moment of inertia (solid sphere) from density.
     void setRadius(std::size_t i, double r, double density);
+
+    //- Renumbers the particles: new particle k is old particle order[k] (a permutation).
+    void reorder(const std::vector<int>& order);
 };
 
 } // namespace sdf::dem
