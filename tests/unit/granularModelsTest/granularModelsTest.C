@@ -169,6 +169,35 @@ fileName constantFile(const word& name)
     return testTimePtr->globalPath()/testTimePtr->constant()/name;
 }
 
+//- The prescribed simple shear and the Savage-Jeffrey temperature on it
+//  (registers T = 3 (dMean gammaDot/R)^2, which the T-dependent laws read)
+struct shearWithTemperature
+{
+    autoPtr<bulkFlowModel> flow;
+    autoPtr<granularTemperatureModel> temp;
+
+    explicit shearWithTemperature(const scalar R)
+    :
+        flow(bulkFlowModel::New(dictOf("model prescribed;"), *testMixturePtr)),
+        temp
+        (
+            granularTemperatureModel::New
+            (
+                dictOf
+                (
+                    (
+                        "model savageJeffrey; savageJeffreyCoeffs { R "
+                      + std::to_string(R) + "; }"
+                    ).c_str()
+                ),
+                *testMixturePtr
+            )
+        )
+    {
+        temp->correct(flow());
+    }
+};
+
 } // End anonymous namespace
 
 
@@ -215,19 +244,9 @@ TEST(granularMixture, compositionMeanDiameterAndRegularisation)
 TEST(granularTemperature, savageJeffreyOnSimpleShear)
 {
     setFields(0.48, 0.12);
-    autoPtr<bulkFlowModel> flow
-    (
-        bulkFlowModel::New(dictOf("model prescribed;"), *testMixturePtr)
-    );
-    autoPtr<granularTemperatureModel> temp
-    (
-        granularTemperatureModel::New
-        (
-            dictOf("model savageJeffrey; savageJeffreyCoeffs { R 0.5; }"),
-            *testMixturePtr
-        )
-    );
-    temp->correct(flow());
+    const shearWithTemperature shear(0.5);
+    const autoPtr<bulkFlowModel>& flow = shear.flow;
+    const autoPtr<granularTemperatureModel>& temp = shear.temp;
 
     // T = 3 (dMean gammaDot/R)^2 = 3 (1.2e-3*2/0.5)^2
     const scalar Texpected = 3*sqr(1.2e-3*gammaDot0/0.5);
@@ -677,19 +696,9 @@ TEST(kineticSieving, tabulatedEtaDrift)
     table.write(constantFile("calibrationEtaDrift.h5"));
 
     setFields(0.32, 0.08);   // phi 0.4, x 0.2
-    autoPtr<bulkFlowModel> flow
-    (
-        bulkFlowModel::New(dictOf("model prescribed;"), *testMixturePtr)
-    );
-    autoPtr<granularTemperatureModel> temp
-    (
-        granularTemperatureModel::New
-        (
-            dictOf("model savageJeffrey; savageJeffreyCoeffs { R 1; }"),
-            *testMixturePtr
-        )
-    );
-    temp->correct(flow());
+    const shearWithTemperature shear(1);
+    const autoPtr<bulkFlowModel>& flow = shear.flow;
+    const autoPtr<granularTemperatureModel>& temp = shear.temp;
     autoPtr<kineticSievingModel> sieving
     (
         kineticSievingModel::New
@@ -943,20 +952,9 @@ TEST(kineticSieving, velocityGradientDrift)
 TEST(kineticSieving, calibratedEtaDrift)
 {
     setFields(0.32, 0.08);   // phi 0.4, x 0.2
-    autoPtr<bulkFlowModel> flow
-    (
-        bulkFlowModel::New(dictOf("model prescribed;"), *testMixturePtr)
-    );
-    // Registers T = 3 (dMean gammaDot/R)^2
-    autoPtr<granularTemperatureModel> temp
-    (
-        granularTemperatureModel::New
-        (
-            dictOf("model savageJeffrey; savageJeffreyCoeffs { R 1; }"),
-            *testMixturePtr
-        )
-    );
-    temp->correct(flow());
+    const shearWithTemperature shear(1);
+    const autoPtr<bulkFlowModel>& flow = shear.flow;
+    const autoPtr<granularTemperatureModel>& temp = shear.temp;
     autoPtr<kineticSievingModel> sieving
     (
         kineticSievingModel::New
