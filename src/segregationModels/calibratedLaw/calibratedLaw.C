@@ -94,7 +94,6 @@ void checkPolicyFitsLaw
 
 Foam::calibratedLaw::calibratedLaw
 (
-    const granularMixture& mixture,
     const word& coefficient,
     const dictionary& modelDict
 )
@@ -112,6 +111,17 @@ Foam::calibratedLaw::calibratedLaw
         )
     ),
     diameterPower_(1)
+{}
+
+
+Foam::calibratedLaw::calibratedLaw
+(
+    const granularMixture& mixture,
+    const word& coefficient,
+    const dictionary& modelDict
+)
+:
+    calibratedLaw(coefficient, modelDict)
 {
     const modeType mode =
         modeNames.getOrDefault("mode", modelDict, modeType::law);
@@ -143,19 +153,7 @@ Foam::calibratedLaw::calibratedLaw
     const dictionary& modelDict
 )
 :
-    coefficient_(coefficient),
-    law_(),
-    params_(),
-    policy_
-    (
-        outsidePolicyNames.getOrDefault
-        (
-            "outsideEnvelope",
-            modelDict,
-            outsidePolicy::clamp
-        )
-    ),
-    diameterPower_(1)
+    calibratedLaw(coefficient, modelDict)
 {
     if (modeNames.getOrDefault("mode", modelDict, modeType::law) != modeType::law)
     {
