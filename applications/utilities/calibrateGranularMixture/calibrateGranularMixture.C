@@ -103,8 +103,6 @@ using namespace Foam;
 namespace
 {
 
-const char* const contentName = calibrationStore::contentName();
-
 //- Jamming limit of the envelope (random close packing)
 const scalar phiJamming = 0.64;
 
@@ -820,20 +818,7 @@ std::map<std::string, std::string> storedConditions(const fileName& h5)
     {
         sdf::io::File f = sdf::io::File::openReadOnly(h5);
         const sdf::io::Group root = f.root();
-        if
-        (
-            !root.hasAttribute("content")
-         || root.attributeType("content") != sdf::io::AttributeType::string
-         || root.readString("content") != contentName
-        )
-        {
-            throw std::runtime_error
-            (
-                "it is a segregationDegradationFoam HDF5 file, but not one of"
-                " calibrateGranularMixture (root attribute content = \""
-              + std::string(contentName) + "\" missing)"
-            );
-        }
+        calibrationStore::checkIsStore(root);
         if (root.hasGroup("conditions"))
         {
             const sdf::io::Group conditions = root.openGroup("conditions");

@@ -25,9 +25,6 @@ Foam::calibrationTable::interpolationTypeNames
     { interpolationType::steffen, "steffen" },
 });
 
-const char* const Foam::calibrationTable::contentName =
-    Foam::calibrationStore::contentName();
-
 
 namespace
 {
@@ -179,20 +176,7 @@ void Foam::calibrationTable::read()
     {
         sdf::io::File f = sdf::io::File::openReadOnly(file_);
         const sdf::io::Group root = f.root();
-        if
-        (
-            !root.hasAttribute("content")
-         || root.attributeType("content") != sdf::io::AttributeType::string
-         || root.readString("content") != contentName
-        )
-        {
-            throw std::runtime_error
-            (
-                "it is a segregationDegradationFoam HDF5 file, but not a"
-                " store of calibrateGranularMixture (root attribute content"
-                " = \"" + std::string(contentName) + "\" missing)"
-            );
-        }
+        calibrationStore::checkIsStore(root);
         fineName_ = root.readString("fineSpecies");
         coarseName_ = root.readString("coarseSpecies");
 
