@@ -15,6 +15,21 @@
 namespace sdf::dem
 {
 
+namespace
+{
+
+//- Wall-clock seconds for the busy times that balance the force-pass blocks.
+double wallSeconds()
+{
+#ifdef _OPENMP
+    return omp_get_wtime();
+#else
+    return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
+#endif
+}
+
+} // namespace
+
 CellMode cellModeFromName(const std::string& name)
 {
     if (name == "nve") return CellMode::nve;
@@ -382,38 +397,73 @@ void Simulation::partitionWork()
     const int n = int(particles_.size());
     const int nPairs = int(list_.size());
     const int nBlocks = std::max(1, nThreads_);
+
+    // Work model: a listed pair (nearly all of them are not touching: distance test only)
+    // costs 1, integrating a particle about 0.5 (measured on the sheared N 3000 cell).
+    // The blocks' shares of that work start equal and then follow the measured busy times
+    // since the last partition (the higher blocks also add the lower blocks' cross
+    // contacts, and their particles' cache lines are shared with the block below), halfway
+    // at each rebuild. The block boundaries do not change any result: every particle sums
+    // its pairs in pair order whatever the blocks (see computeForces).
+    constexpr double particleCost = 0.5;
+    if (int(blockShare_.size()) != nBlocks)
+    {
+        blockShare_.assign(nBlocks, 1.0/nBlocks);
+        blockBusy_.assign(nBlocks, 0.0);
+    }
+    else if (nBlocks > 1)
+    {
+        double speedSum = 0;
+        std::vector<double> speed(nBlocks, 0.0);
+        bool measured = true;
+        for (int b = 0; b < nBlocks; ++b)
+        {
+            measured = measured && blockBusy_[b] > 0 && blockWork_[b] > 0;
+            if (measured) speed[b] = blockWork_[b]/blockBusy_[b];
+            speedSum += speed[b];
+        }
+        if (measured)
+        {
+            for (int b = 0; b < nBlocks; ++b)
+            {
+                // bounded so that one disturbed interval cannot starve a block
+                const double target = std::clamp(speed[b]/speedSum, 0.25/nBlocks, 1.75/nBlocks);
+                blockShare_[b] = 0.5*(blockShare_[b] + target);
+            }
+        }
+        blockBusy_.assign(nBlocks, 0.0);
+    }
+
     blockParticle_.assign(nBlocks + 1, n);
     blockPair_.assign(nBlocks + 1, nPairs);
+    blockWork_.assign(nBlocks, 0.0);
     blockParticle_[0] = 0;
     blockPair_[0] = 0;
-    if (nBlocks > 1)
     {
-        // equal shares of the work: a listed pair (nearly all of them are not touching:
-        // distance test only) costs 1, integrating a particle about 0.5 (measured on the
-        // sheared N 3000 cell). Deterministic: depends on the pair list only.
-        constexpr double particleCost = 0.5;
         const std::vector<int>& first = list_.first();
         const double total = nPairs + particleCost*n;
-        double done = 0;
-        int k = 0, block = 1;
-        for (int i = 0; i < n && block < nBlocks; ++i)
+        double done = 0, boundary = blockShare_[0]*total;
+        int k = 0, block = 0;
+        for (int i = 0; i < n; ++i)
         {
-            while (done >= block*total/nBlocks && block < nBlocks)
+            while (done >= boundary && block < nBlocks - 1)
             {
+                ++block;
                 blockParticle_[block] = i;
                 blockPair_[block] = k;
-                ++block;
+                boundary += blockShare_[block]*total;
             }
             const int k0 = k;
             while (k < nPairs && first[k] == i) ++k;
-            done += (k - k0) + particleCost;
+            const double work = (k - k0) + particleCost;
+            done += work;
+            blockWork_[block] += work;
         }
     }
-    blockCounts_.resize(nBlocks);
-    blockEnergy_.resize(nBlocks);
     blockHist_.resize(nBlocks);
+    blockImpacts_.resize(nBlocks);
     blockContacts_.resize(nBlocks);
-    blockContactCount_.assign(nBlocks, 0);
+    blockCross_.resize(nBlocks);
     nearPairs_.resize(nBlocks);
 }
 
@@ -442,20 +492,24 @@ void Simulation::computeForces(bool checkDisplacements, bool halfKick)
     const int nBlocks = int(blockParticle_.size()) - 1;
     const int* blockParticle = blockParticle_.data();
     const int* blockPair = blockPair_.data();
+    // busy times for the block shares (only when there is more than one block)
+    const bool balance = nBlocks > 1;
 
     double maxOverlap = 0;
 
     // Force pass. Block b owns particles [P_b, P_b+1) and the pairs whose first particle it
     // owns; pairs are (i, j)-ordered with i < j, so block b's pairs read particles >= P_b
-    // only. Every particle sums its incident pairs in increasing pair order, starting from
-    // zero, whatever the blocks and threads (bitwise reproducible, thread-count independent):
-    //  - block 0 (all particles on one thread) adds each contact to i and, when j is its own,
-    //    to j directly: its particles' pairs all lie in its range and come in pair order;
-    //  - the other blocks' particles also have pairs of lower blocks, so their sums are
-    //    gathered from the per-pair slots after a barrier.
-    // Slots of touching pairs are always written: stress sampling reads them. A block's
-    // particles are read by no lower block, so each integrates (second half kick) its
-    // particles as soon as their forces are complete.
+    // only. Every particle sums its incident pairs in DEcreasing pair order, starting from
+    // zero, whatever the blocks and threads (bitwise reproducible, independent of the
+    // thread count and of the block boundaries):
+    //  - a block evaluates its contacts from the last to the first and adds each to i and,
+    //    when j is its own, to j: its own pairs are the highest-numbered pairs of all its
+    //    particles, so they come first;
+    //  - contacts whose j lies in a higher block ("cross" contacts, listed per block in the
+    //    same decreasing order) come from lower-numbered pairs: after a barrier, the owner
+    //    of j adds them, block b-1's first, down to block 0's, and only then finishes its
+    //    particles (torque, second half kick).
+    // Slots of touching pairs are always written: stress sampling reads them.
     #pragma omp parallel num_threads(nThreads_) reduction(max:maxOverlap)
     {
         int tid = 0, team = 1;
@@ -463,10 +517,16 @@ void Simulation::computeForces(bool checkDisplacements, bool halfKick)
         tid = omp_get_thread_num();
         team = omp_get_num_threads();
 #endif
-        auto kick = [&](int b)
+        // torque from the sum of n x F_t, then the second half kick
+        auto finish = [&](int begin, int end)
         {
+            for (int i = begin; i < end; ++i)
+            {
+                const double r = p.radius[i];
+                p.tx[i] = -r*p.tx[i]; p.ty[i] = -r*p.ty[i]; p.tz[i] = -r*p.tz[i];
+            }
             if (!kickHere) return;
-            for (int i = blockParticle[b]; i < blockParticle[b + 1]; ++i)
+            for (int i = begin; i < end; ++i)
             {
                 const double im = p.invMass[i], ii = p.invInertia[i];
                 p.vx[i] += h*p.fx[i]*im; p.vy[i] += h*p.fy[i]*im; p.vz[i] += h*p.fz[i]*im;
@@ -476,24 +536,19 @@ void Simulation::computeForces(bool checkDisplacements, bool halfKick)
 
         for (int b = tid; b < nBlocks; b += team)
         {
-            std::vector<long>& counts = blockCounts_[b];
-            std::vector<double>& energy = blockEnergy_[b];
+            const double busyStart = balance ? wallSeconds() : 0;
             std::vector<long>& hist = blockHist_[b];
+            std::vector<CollisionRecord>& impacts = blockImpacts_[b];
             if (collisionsEnabled_)
             {
-                counts.assign(nSpeciesPairs, 0);
-                energy.assign(nSpeciesPairs, 0.0);
                 hist.assign(std::size_t(nSpeciesPairs)*nHist, 0);
+                impacts.clear();
             }
-            const bool scatter = b == 0;
-            const int ownEnd = blockParticle[b + 1];
-            if (scatter)
+            const int ownBegin = blockParticle[b], ownEnd = blockParticle[b + 1];
+            for (int i = ownBegin; i < ownEnd; ++i)
             {
-                for (int i = 0; i < ownEnd; ++i)
-                {
-                    p.fx[i] = p.fy[i] = p.fz[i] = 0;
-                    p.tx[i] = p.ty[i] = p.tz[i] = 0;   // sum of n x F_t until the end
-                }
+                p.fx[i] = p.fy[i] = p.fz[i] = 0;
+                p.tx[i] = p.ty[i] = p.tz[i] = 0;   // sum of n x F_t until finish()
             }
 
             // 1. which listed pairs touch (most do not): a short loop without the
@@ -502,7 +557,8 @@ void Simulation::computeForces(bool checkDisplacements, bool halfKick)
             std::vector<int>& contacts = blockContacts_[b];
             std::vector<int>& near = nearPairs_[b];
             const int nListed = blockPair[b + 1] - blockPair[b];
-            contacts.resize(std::size_t(nListed));
+            // sized once per list (no shrinking: growing again would fill it with zeros)
+            if (contacts.size() < std::size_t(nListed)) contacts.resize(std::size_t(nListed));
             int nContacts = 0, nNear = 0;
             if (rebuildNear) near.resize(std::size_t(nListed));
             const int nScan = rebuildNear ? nListed : int(near.size());
@@ -534,12 +590,12 @@ void Simulation::computeForces(bool checkDisplacements, bool halfKick)
                     pcx_[k] = pcy_[k] = pcz_[k] = 0;
                 }
             }
-
-            blockContactCount_[b] = nContacts;
             if (rebuildNear) near.resize(std::size_t(nNear));
 
-            // 2. the contact law on the touching pairs, in pair order
-            for (int c = 0; c < nContacts; ++c)
+            // 2. the contact law on the touching pairs, from the last to the first
+            std::vector<int>& cross = blockCross_[b];
+            cross.clear();
+            for (int c = nContacts - 1; c >= 0; --c)
             {
                 const int k = contacts[c];
                 const int i = first[k], j = second[k];
@@ -568,15 +624,16 @@ void Simulation::computeForces(bool checkDisplacements, bool halfKick)
 
                 pfx_[k] = res.force[0]; pfy_[k] = res.force[1]; pfz_[k] = res.force[2];
                 pcx_[k] = res.nCrossFt[0]; pcy_[k] = res.nCrossFt[1]; pcz_[k] = res.nCrossFt[2];
-                if (scatter)
+                p.fx[i] += res.force[0]; p.fy[i] += res.force[1]; p.fz[i] += res.force[2];
+                p.tx[i] += res.nCrossFt[0]; p.ty[i] += res.nCrossFt[1]; p.tz[i] += res.nCrossFt[2];
+                if (j < ownEnd)
                 {
-                    p.fx[i] += res.force[0]; p.fy[i] += res.force[1]; p.fz[i] += res.force[2];
-                    p.tx[i] += res.nCrossFt[0]; p.ty[i] += res.nCrossFt[1]; p.tz[i] += res.nCrossFt[2];
-                    if (j < ownEnd)
-                    {
-                        p.fx[j] -= res.force[0]; p.fy[j] -= res.force[1]; p.fz[j] -= res.force[2];
-                        p.tx[j] += res.nCrossFt[0]; p.ty[j] += res.nCrossFt[1]; p.tz[j] += res.nCrossFt[2];
-                    }
+                    p.fx[j] -= res.force[0]; p.fy[j] -= res.force[1]; p.fz[j] -= res.force[2];
+                    p.tx[j] += res.nCrossFt[0]; p.ty[j] += res.nCrossFt[1]; p.tz[j] += res.nCrossFt[2];
+                }
+                else
+                {
+                    cross.push_back(k);
                 }
 
                 const double frac = res.overlap/(2*std::min(ri, rj));
@@ -586,8 +643,7 @@ void Simulation::computeForces(bool checkDisplacements, bool halfKick)
                 {
                     const int sp = speciesPairIndex(si, sj, nSpecies);
                     const double e = 0.5*coeffs.effectiveMass*res.normalVelocity*res.normalVelocity;
-                    ++counts[sp];
-                    energy[sp] += e;
+                    impacts.push_back({sp, e});
                     const std::vector<double>& edges = collisions_.binEdges;
                     int bin;
                     if (e < edges.front()) bin = 0;
@@ -597,15 +653,10 @@ void Simulation::computeForces(bool checkDisplacements, bool halfKick)
                 }
             }
 
-            if (scatter)
-            {
-                for (int i = 0; i < ownEnd; ++i)
-                {
-                    const double r = p.radius[i];
-                    p.tx[i] = -r*p.tx[i]; p.ty[i] = -r*p.ty[i]; p.tz[i] = -r*p.tz[i];
-                }
-                kick(0);
-            }
+            // one block is complete: finish it now (else after the barrier, in parallel with
+            // the higher blocks adding their cross contacts)
+            if (nBlocks == 1) finish(ownBegin, ownEnd);
+            if (balance) blockBusy_[b] += wallSeconds() - busyStart;
         }
 
         if (nBlocks > 1)
@@ -613,47 +664,22 @@ void Simulation::computeForces(bool checkDisplacements, bool halfKick)
             #pragma omp barrier
         }
 
-        // blocks > 0: each particle's sum, replayed from the contacts' slots in pair order:
-        // first the contacts of lower blocks that reach it (as second particle), then
-        // the block's own contacts (few pairs touch: this is cheap)
-        for (int b = tid; b < nBlocks; b += team)
+        for (int b = tid; b < nBlocks && nBlocks > 1; b += team)
         {
-            if (b == 0) continue;
+            const double busyStart = balance ? wallSeconds() : 0;
             const int ownBegin = blockParticle[b], ownEnd = blockParticle[b + 1];
-            for (int i = ownBegin; i < ownEnd; ++i)
+            for (int lower = b - 1; lower >= 0; --lower)
             {
-                p.fx[i] = p.fy[i] = p.fz[i] = 0;
-                p.tx[i] = p.ty[i] = p.tz[i] = 0;
-            }
-            for (int lower = 0; lower < b; ++lower)
-            {
-                const int* contacts = blockContacts_[lower].data();
-                for (int c = 0; c < blockContactCount_[lower]; ++c)
+                for (const int k : blockCross_[lower])
                 {
-                    const int k = contacts[c], j = second[k];
+                    const int j = second[k];
                     if (j < ownBegin || j >= ownEnd) continue;
                     p.fx[j] -= pfx_[k]; p.fy[j] -= pfy_[k]; p.fz[j] -= pfz_[k];
                     p.tx[j] += pcx_[k]; p.ty[j] += pcy_[k]; p.tz[j] += pcz_[k];
                 }
             }
-            const int* contacts = blockContacts_[b].data();
-            for (int c = 0; c < blockContactCount_[b]; ++c)
-            {
-                const int k = contacts[c], i = first[k], j = second[k];
-                p.fx[i] += pfx_[k]; p.fy[i] += pfy_[k]; p.fz[i] += pfz_[k];
-                p.tx[i] += pcx_[k]; p.ty[i] += pcy_[k]; p.tz[i] += pcz_[k];
-                if (j < ownEnd)
-                {
-                    p.fx[j] -= pfx_[k]; p.fy[j] -= pfy_[k]; p.fz[j] -= pfz_[k];
-                    p.tx[j] += pcx_[k]; p.ty[j] += pcy_[k]; p.tz[j] += pcz_[k];
-                }
-            }
-            for (int i = ownBegin; i < ownEnd; ++i)
-            {
-                const double r = p.radius[i];
-                p.tx[i] = -r*p.tx[i]; p.ty[i] = -r*p.ty[i]; p.tz[i] = -r*p.tz[i];
-            }
-            kick(b);
+            finish(ownBegin, ownEnd);
+            if (balance) blockBusy_[b] += wallSeconds() - busyStart;
         }
     }
 
@@ -710,13 +736,18 @@ void Simulation::computeForces(bool checkDisplacements, bool halfKick)
 
     if (collisionsEnabled_)
     {
-        // block order: reproducible for a given thread count
+        // impact energies summed in pair order (blocks in order, each block's records
+        // reversed): the same sums whatever the threads and block boundaries
         for (int b = 0; b < nBlocks; ++b)
         {
+            const std::vector<CollisionRecord>& impacts = blockImpacts_[b];
+            for (auto r = impacts.rbegin(); r != impacts.rend(); ++r)
+            {
+                ++collisions_.counts[r->speciesPair];
+                collisions_.energySum[r->speciesPair] += r->energy;
+            }
             for (int sp = 0; sp < nSpeciesPairs; ++sp)
             {
-                collisions_.counts[sp] += blockCounts_[b][sp];
-                collisions_.energySum[sp] += blockEnergy_[b][sp];
                 for (int bin = 0; bin < nHist; ++bin)
                 {
                     collisions_.histogram[sp][bin] += blockHist_[b][sp*nHist + bin];
@@ -774,6 +805,7 @@ void Simulation::step()
     if (blockParticle_.size() < 2 || blockParticle_.back() != n) partitionWork();
     const int nBlocks = int(blockParticle_.size()) - 1;
     const int* blockParticle = blockParticle_.data();
+    const bool balance = nBlocks > 1;
     #pragma omp parallel num_threads(nThreads_) reduction(max:maxDisp2, maxStep2)
     {
         int tid = 0, team = 1;
@@ -783,6 +815,7 @@ void Simulation::step()
 #endif
         for (int b = tid; b < nBlocks; b += team)
         {
+            const double busyStart = balance ? wallSeconds() : 0;
             for (int i = blockParticle[b]; i < blockParticle[b + 1]; ++i)
             {
                 const double im = p.invMass[i], ii = p.invInertia[i];
@@ -811,6 +844,7 @@ void Simulation::step()
                 swy_[i] = p.wy[i] + tyi;
                 swz_[i] = p.wz[i] + tzi;
             }
+            if (balance) blockBusy_[b] += wallSeconds() - busyStart;
         }
     }
     time_ += dt;

@@ -221,9 +221,14 @@ private:
     // force-pass blocks: block b owns particles [blockParticle_[b], blockParticle_[b+1]) and
     // the pairs [blockPair_[b], blockPair_[b+1]) whose first particle it owns
     std::vector<int> blockParticle_, blockPair_;
-    // per block: collision counts, energies, histogram (merged in block order)
-    std::vector<std::vector<long>> blockCounts_, blockHist_;
-    std::vector<std::vector<double>> blockEnergy_;
+    // per block: share of the work model (following the measured busy times), work in
+    // the model's units and busy seconds of the force pass and drift since the partition
+    std::vector<double> blockShare_, blockWork_, blockBusy_;
+    // per block: impact histogram, and the impacts (species pair, energy) in reverse pair
+    // order, so energies are summed in pair order whatever the blocks
+    struct CollisionRecord { int speciesPair; double energy; };
+    std::vector<std::vector<long>> blockHist_;
+    std::vector<std::vector<CollisionRecord>> blockImpacts_;
     // Near list: per block, the listed pairs (ascending) whose gap was below nearSkin_ at
     // its build; no other listed pair can touch while the relative displacement bound
     // nearDrift_ (+ radius growth) stays below nearSkin_, so the per-step distance test
@@ -233,8 +238,10 @@ private:
     double nearSkin_ = 0;
     double nearDrift_ = 0;
     double nearRadiusGrowth_ = 0;
-    std::vector<std::vector<int>> blockContacts_;   // per block: touching pairs this step,
-    std::vector<int> blockContactCount_;            // in pair order, and their number
+    std::vector<std::vector<int>> blockContacts_;   // per block: touching pairs this step, in pair order
+    // per block: its touching pairs whose second particle lies in a higher block, in
+    // decreasing pair order (added by that block's owner after the barrier)
+    std::vector<std::vector<int>> blockCross_;
     std::vector<std::vector<ContactHistory>> wallHistory_;    // per wall, per particle
 
     // synchronised velocity estimates v^{n+1/2} + dt/2 a^n
