@@ -17,7 +17,9 @@
 //   equilibrationTime, maxEquilibrationTime, samplingTime [s], sampleEvery [steps], blocks
 //   progressEvery [steps], output (HDF5 file), label, skin [m]
 //   lammpsData (write the initial state as a LAMMPS data file), throughputOnly (1: no
-//   measurements, only T; for speed comparisons), checkpointFile, checkpointEvery [steps],
+//   measurements, only T; for speed comparisons), threadScalingRounds (with throughputOnly:
+//   the equilibrated state run alternately on 1 and on `threads` threads, this many
+//   rounds; prints the speed-ups), checkpointFile, checkpointEvery [steps],
 //   resume (1: continue the sampling from checkpointFile, same settings)
 #include "CellRun.hpp"
 
@@ -48,7 +50,7 @@ const std::set<std::string> validKeys =
     "tangentialStiffnessRatio", "tangentialDampingRatio", "youngsModulus", "poissonRatio",
     "timeStep", "threads", "seed", "equilibrationTime", "samplingTime", "sampleEvery",
     "blocks", "progressEvery", "output", "label", "thermostatTime", "maxOverlapFraction",
-    "lammpsData", "throughputOnly", "skin", "maxEquilibrationTime",
+    "lammpsData", "throughputOnly", "threadScalingRounds", "skin", "maxEquilibrationTime",
     "checkpointFile", "checkpointEvery", "resume"
 };
 
@@ -146,6 +148,7 @@ CellRunSettings settingsFrom(const std::map<std::string, std::string>& c)
     s.label = text(c, "label", "periodicDEM");
     s.lammpsDataFile = text(c, "lammpsData", "");
     s.throughputOnly = number(c, "throughputOnly", 0) != 0;
+    s.threadScalingRounds = int(number(c, "threadScalingRounds", 0));
     s.checkpointFile = text(c, "checkpointFile", "");
     s.checkpointEvery = long(number(c, "checkpointEvery", 0));
     s.resume = number(c, "resume", 0) != 0;

@@ -1,6 +1,7 @@
 #include "NeighbourList.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -53,31 +54,15 @@ void NeighbourList::build(const Particles& p, const PeriodicBox& box, double ski
 
     const int shiftCells = int(std::floor(box.offset/wx));
 
-    int nThreads = 1;
-#ifdef _OPENMP
-    nThreads = threads > 0 ? threads : omp_get_max_threads();
-#else
-    (void)threads;
-#endif
-    std::vector<std::vector<int>> firstLocal(nThreads), secondLocal(nThreads);
-
-    #pragma omp parallel num_threads(nThreads)
+    // each cell's neighbour cells (Lees-Edwards: the rows across the y boundary are shifted
+    // by the offset), once per cell rather than once per particle
+    stencilStart_.assign(nCells + 1, 0);
+    stencilCells_.clear();
     {
-        int tid = 0;
-#ifdef _OPENMP
-        tid = omp_get_thread_num();
-#endif
-        std::vector<int>& fl = firstLocal[tid];
-        std::vector<int>& sl = secondLocal[tid];
         std::vector<int> cells;
-        std::vector<int> partners;
         cells.reserve(64);
-
-        // static schedule without chunk: contiguous blocks of i in thread order
-        #pragma omp for schedule(static)
-        for (int i = 0; i < n; ++i)
+        for (int c = 0; c < nCells; ++c)
         {
-            const int c = particleCell_[i];
             const int cx = c % ncx, cy = (c/ncx) % ncy, cz = c/(ncx*ncy);
             cells.clear();
             for (int dz = -1; dz <= 1; ++dz)
@@ -99,19 +84,65 @@ void NeighbourList::build(const Particles& p, const PeriodicBox& box, double ski
             }
             std::sort(cells.begin(), cells.end());
             cells.erase(std::unique(cells.begin(), cells.end()), cells.end());
+            stencilCells_.insert(stencilCells_.end(), cells.begin(), cells.end());
+            stencilStart_[c + 1] = int(stencilCells_.size());
+        }
+    }
 
+    // positions and radii in cell order: the candidate loop reads them contiguously
+    cellPosition_.resize(n);
+    for (int k = 0; k < n; ++k)
+    {
+        const int j = cellParticles_[k];
+        cellPosition_[k] = {p.x[j], p.y[j], p.z[j], p.radius[j]};
+    }
+
+    int nThreads = 1;
+#ifdef _OPENMP
+    nThreads = threads > 0 ? threads : omp_get_max_threads();
+#else
+    (void)threads;
+#endif
+    // per-thread pair lists, kept between builds (no reallocation as they grow)
+    if (int(firstLocal_.size()) != nThreads)
+    {
+        firstLocal_.assign(nThreads, {});
+        secondLocal_.assign(nThreads, {});
+    }
+
+    #pragma omp parallel num_threads(nThreads)
+    {
+        int tid = 0;
+#ifdef _OPENMP
+        tid = omp_get_thread_num();
+#endif
+        std::vector<int>& fl = firstLocal_[tid];
+        std::vector<int>& sl = secondLocal_[tid];
+        fl.clear();
+        sl.clear();
+        std::vector<int> partners;
+
+        // static schedule without chunk: contiguous blocks of i in thread order
+        #pragma omp for schedule(static)
+        for (int i = 0; i < n; ++i)
+        {
+            const int c = particleCell_[i];
             partners.clear();
             const double xi = p.x[i], yi = p.y[i], zi = p.z[i], ri = p.radius[i];
-            for (const int cell : cells)
+            for (int s = stencilStart_[c]; s < stencilStart_[c + 1]; ++s)
             {
-                for (int k = cellStart_[cell]; k < cellStart_[cell + 1]; ++k)
+                const int cell = stencilCells_[s];
+                // a cell lists its particles in increasing index: start after i
+                const int* begin = cellParticles_.data() + cellStart_[cell];
+                const int* end = cellParticles_.data() + cellStart_[cell + 1];
+                const int* k = std::upper_bound(begin, end, i);
+                for (; k != end; ++k)
                 {
-                    const int j = cellParticles_[k];
-                    if (j <= i) continue;
-                    double dx = xi - p.x[j], dy = yi - p.y[j], dz = zi - p.z[j], dvx = 0;
+                    const std::array<double, 4>& q = cellPosition_[k - cellParticles_.data()];
+                    double dx = xi - q[0], dy = yi - q[1], dz = zi - q[2], dvx = 0;
                     box.minimumImage(dx, dy, dz, dvx);
-                    const double reach = ri + p.radius[j] + skin;
-                    if (dx*dx + dy*dy + dz*dz < reach*reach) partners.push_back(j);
+                    const double reach = ri + q[3] + skin;
+                    if (dx*dx + dy*dy + dz*dz < reach*reach) partners.push_back(*k);
                 }
             }
             std::sort(partners.begin(), partners.end());
@@ -123,8 +154,8 @@ void NeighbourList::build(const Particles& p, const PeriodicBox& box, double ski
     second_.clear();
     for (int t = 0; t < nThreads; ++t)
     {
-        first_.insert(first_.end(), firstLocal[t].begin(), firstLocal[t].end());
-        second_.insert(second_.end(), secondLocal[t].begin(), secondLocal[t].end());
+        first_.insert(first_.end(), firstLocal_[t].begin(), firstLocal_[t].end());
+        second_.insert(second_.end(), secondLocal_[t].begin(), secondLocal_[t].end());
     }
 
     ++builds_;

@@ -10,6 +10,7 @@
 #include "Particles.hpp"
 #include "PeriodicBox.hpp"
 
+#include <array>
 #include <vector>
 
 namespace sdf::dem
@@ -42,6 +43,9 @@ public:
 private:
     std::vector<int> first_, second_;
     std::vector<int> cellStart_, cellParticles_, particleCell_;
+    std::vector<int> stencilStart_, stencilCells_;          // neighbour cells per cell
+    std::vector<std::array<double, 4>> cellPosition_;       // x, y, z, r in cell order
+    std::vector<std::vector<int>> firstLocal_, secondLocal_;   // per-thread pairs
     double cutoff_ = 0;
     long builds_ = 0;
 };

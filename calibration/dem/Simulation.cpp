@@ -593,7 +593,7 @@ void Simulation::computeForces(bool checkDisplacements, bool halfKick)
             if (rebuildNear) near.resize(std::size_t(nNear));
 
             // 2. the contact law on the touching pairs, from the last to the first
-            std::vector<int>& cross = blockCross_[b];
+            std::vector<CrossContact>& cross = blockCross_[b];
             cross.clear();
             for (int c = nContacts - 1; c >= 0; --c)
             {
@@ -633,7 +633,12 @@ void Simulation::computeForces(bool checkDisplacements, bool halfKick)
                 }
                 else
                 {
-                    cross.push_back(k);
+                    cross.push_back
+                    ({
+                        j,
+                        {res.force[0], res.force[1], res.force[2]},
+                        {res.nCrossFt[0], res.nCrossFt[1], res.nCrossFt[2]}
+                    });
                 }
 
                 const double frac = res.overlap/(2*std::min(ri, rj));
@@ -670,12 +675,12 @@ void Simulation::computeForces(bool checkDisplacements, bool halfKick)
             const int ownBegin = blockParticle[b], ownEnd = blockParticle[b + 1];
             for (int lower = b - 1; lower >= 0; --lower)
             {
-                for (const int k : blockCross_[lower])
+                for (const CrossContact& c : blockCross_[lower])
                 {
-                    const int j = second[k];
+                    const int j = c.j;
                     if (j < ownBegin || j >= ownEnd) continue;
-                    p.fx[j] -= pfx_[k]; p.fy[j] -= pfy_[k]; p.fz[j] -= pfz_[k];
-                    p.tx[j] += pcx_[k]; p.ty[j] += pcy_[k]; p.tz[j] += pcz_[k];
+                    p.fx[j] -= c.force[0]; p.fy[j] -= c.force[1]; p.fz[j] -= c.force[2];
+                    p.tx[j] += c.nCrossFt[0]; p.ty[j] += c.nCrossFt[1]; p.tz[j] += c.nCrossFt[2];
                 }
             }
             finish(ownBegin, ownEnd);

@@ -239,9 +239,11 @@ private:
     double nearDrift_ = 0;
     double nearRadiusGrowth_ = 0;
     std::vector<std::vector<int>> blockContacts_;   // per block: touching pairs this step, in pair order
-    // per block: its touching pairs whose second particle lies in a higher block, in
-    // decreasing pair order (added by that block's owner after the barrier)
-    std::vector<std::vector<int>> blockCross_;
+    // per block: its touching pairs whose second particle j lies in a higher block, in
+    // decreasing pair order, with their force on i and n x F_t (added by j's owner after
+    // the barrier; a compact copy, so few cache lines cross between the cores)
+    struct CrossContact { int j; double force[3]; double nCrossFt[3]; };
+    std::vector<std::vector<CrossContact>> blockCross_;
     std::vector<std::vector<ContactHistory>> wallHistory_;    // per wall, per particle
 
     // synchronised velocity estimates v^{n+1/2} + dt/2 a^n

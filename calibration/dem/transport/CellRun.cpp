@@ -8,6 +8,7 @@
 #include "correlation/MultipleTauCorrelator.hpp"
 #include "correlation/Statistics.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <ctime>
 #include <fstream>
@@ -15,6 +16,10 @@
 #include <cstdio>
 #include <sstream>
 #include <stdexcept>
+
+#ifdef _OPENMP
+#include <omp.h>
+#endif
 
 namespace sdf::dem
 {
@@ -32,6 +37,10 @@ void validateCellRunSettings(const CellRunSettings& s)
     if (!(s.equilibrationTime >= 0)) throw std::invalid_argument("equilibrationTime must be >= 0");
     if (s.sampleEvery < 1) throw std::invalid_argument("sampleEvery must be >= 1");
     if (s.blocks < 2) throw std::invalid_argument("blocks must be >= 2 (errors need two)");
+    if (s.threadScalingRounds < 0 || (s.threadScalingRounds > 0 && !s.throughputOnly))
+    {
+        throw std::invalid_argument("threadScalingRounds must be >= 0 and needs throughputOnly");
+    }
     if ((s.resume || s.checkpointEvery > 0) && s.checkpointFile.empty())
     {
         throw std::invalid_argument("checkpointFile must be given with checkpointEvery or resume");
@@ -192,6 +201,43 @@ CellRunResult runCell(const CellRunSettings& settings)
     sim.enableCollisionStatistics(1e-4*eScale, 1e3*eScale, 56);
 
     long sample = 0;
+    if (settings.threadScalingRounds > 0)
+    {
+        // the same equilibrated state on 1 and on N threads, alternately
+        const SimulationState start = sim.exportState();
+        result.scalingThreads = sim0.threads;
+#ifdef _OPENMP
+        if (result.scalingThreads <= 0) result.scalingThreads = omp_get_max_threads();
+#endif
+        result.scalingThreads = std::max(1, result.scalingThreads);
+        for (int round = 0; round < settings.threadScalingRounds; ++round)
+        {
+            std::array<double, 2> rates{};
+            for (int k = 0; k < 2; ++k)
+            {
+                SimulationSettings st = sim0;
+                st.threads = k == 0 ? 1 : result.scalingThreads;
+                Simulation copy(species, st, start.particles, sim.box());
+                copy.importState(start);
+                const auto t0 = clock::now();
+                copy.run(totalSteps);
+                const double wall = std::chrono::duration<double>(clock::now() - t0).count();
+                rates[k] = double(totalSteps)*copy.particles().size()/wall;
+            }
+            result.threadScaling.push_back(rates);
+            if (settings.progressEvery > 0)
+            {
+                std::printf
+                (
+                    "%s: thread scaling round %d/%d: 1 thread %.4g, %d threads %.4g "
+                    "particle-steps/s, speed-up %.3f\n",
+                    settings.label.c_str(), round + 1, settings.threadScalingRounds, rates[0],
+                    result.scalingThreads, rates[1], rates[1]/rates[0]
+                );
+                std::fflush(stdout);
+            }
+        }
+    }
     if (settings.throughputOnly)
     {
         std::vector<double> ts;
@@ -550,6 +596,22 @@ std::string summary(const CellRunResult& r)
         out << "  throughput " << r.particleStepsPerSecond << " particle-steps/s ("
             << r.steps << " steps, " << r.wallSeconds << " s, CPU use "
             << 100*r.cpuSeconds/r.wallSeconds << " %)\n";
+        if (!r.threadScaling.empty())
+        {
+            std::vector<double> speedUps;
+            for (const auto& rates : r.threadScaling) speedUps.push_back(rates[1]/rates[0]);
+            std::sort(speedUps.begin(), speedUps.end());
+            const std::size_t m = speedUps.size();
+            const double median = m % 2 ? speedUps[m/2] : 0.5*(speedUps[m/2 - 1] + speedUps[m/2]);
+            out << "  thread scaling (" << m << " rounds, same state): speed-up on "
+                << r.scalingThreads << " threads: median " << median << ", min "
+                << speedUps.front() << ", max " << speedUps.back() << "\n";
+            for (const auto& rates : r.threadScaling)
+            {
+                out << "    1 thread " << rates[0] << ", " << r.scalingThreads << " threads "
+                    << rates[1] << " particle-steps/s\n";
+            }
+        }
         return out.str();
     }
     for (const SpeciesTransport& st : r.species)

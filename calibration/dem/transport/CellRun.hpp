@@ -12,6 +12,7 @@
 #include "correlation/GreenKubo.hpp"
 #include "correlation/StressGreenKubo.hpp"
 
+#include <array>
 #include <string>
 #include <vector>
 
@@ -41,6 +42,10 @@ struct CellRunSettings
     //- If set: measurements are skipped, the cell only runs (throughput benchmarks);
     //  T is still sampled every sampleEvery steps.
     bool throughputOnly = false;
+    //- With throughputOnly: > 0 runs the equilibrated state for samplingTime with 1 thread
+    //  and with simulation.threads threads, alternately, this many rounds (both from the
+    //  same state, side by side in one process: a thread speed-up on a shared machine).
+    int threadScalingRounds = 0;
     //- Checkpoints during sampling (HDF5, needs sdf_io): the simulation, the correlators,
     //  series, MSD frames and collision counts are written to checkpointFile every
     //  checkpointEvery steps (rounded to whole samples); resume = true continues from it
@@ -104,6 +109,10 @@ struct CellRunResult
     double wallSeconds = 0;
     double cpuSeconds = 0;                 // process CPU time of the sampling (all threads)
     double particleStepsPerSecond = 0;     // per wall-clock second
+    //- threadScalingRounds: per round, particle-steps per wall-clock second on 1 thread and
+    //  on scalingThreads threads
+    int scalingThreads = 0;
+    std::vector<std::array<double, 2>> threadScaling;
 };
 
 CellRunResult runCell(const CellRunSettings& settings);
