@@ -392,57 +392,100 @@ void Simulation::rebuildNeighbourList()
     listValid_ = true;
 }
 
+void BlockBalance::reset(int nBlocks)
+{
+    share.assign(nBlocks, 1.0/nBlocks);
+    work.assign(nBlocks, 0.0);
+    busy.assign(nBlocks, 0.0);
+    totalBusy.assign(nBlocks, 0.0);
+    totalWall = 0;
+}
+
+void BlockBalance::update()
+{
+    const int nBlocks = int(share.size());
+    bool measured = nBlocks > 1;
+    for (int b = 0; b < nBlocks; ++b)
+    {
+        totalBusy[b] += busy[b];
+        measured = measured && busy[b] > 0 && work[b] > 0;
+    }
+    if (measured)
+    {
+        std::vector<double> speed(nBlocks);
+        double speedSum = 0;
+        for (int b = 0; b < nBlocks; ++b)
+        {
+            speed[b] = work[b]/busy[b];
+            speedSum += speed[b];
+        }
+        for (int b = 0; b < nBlocks; ++b)
+        {
+            // halfway, and bounded, so that one disturbed interval cannot starve a block
+            const double target = std::clamp(speed[b]/speedSum, 0.25/nBlocks, 1.75/nBlocks);
+            share[b] = 0.5*(share[b] + target);
+        }
+    }
+    busy.assign(nBlocks, 0.0);
+}
+
+std::vector<int> BlockBalance::splitParticles(int n)
+{
+    const int nBlocks = int(share.size());
+    std::vector<int> begin(nBlocks + 1, n);
+    begin[0] = 0;
+    double cumulative = 0;
+    for (int b = 1; b < nBlocks; ++b)
+    {
+        cumulative += share[b - 1];
+        begin[b] = std::clamp(int(std::lround(cumulative*n)), begin[b - 1], n);
+    }
+    for (int b = 0; b < nBlocks; ++b) work[b] = begin[b + 1] - begin[b];
+    return begin;
+}
+
 void Simulation::partitionWork()
 {
     const int n = int(particles_.size());
     const int nPairs = int(list_.size());
     const int nBlocks = std::max(1, nThreads_);
 
-    // Work model: a listed pair (nearly all of them are not touching: distance test only)
-    // costs 1, integrating a particle about 0.5 (measured on the sheared N 3000 cell).
-    // The blocks' shares of that work start equal and then follow the measured busy times
-    // since the last partition (the higher blocks also add the lower blocks' cross
-    // contacts, and their particles' cache lines are shared with the block below), halfway
-    // at each rebuild. The block boundaries do not change any result: every particle sums
-    // its pairs in pair order whatever the blocks (see computeForces).
+    // Each phase of a step (drift, force pass up to the barrier, cross contacts + finish
+    // after it) splits the particles into one contiguous range per thread. Work model of
+    // the force pass: a listed pair (nearly all of them are not touching: distance test
+    // only) costs 1, a particle about 0.5 (measured on the sheared N 3000 cell); of the
+    // others: a particle costs 1. The shares start equal and then follow each phase's
+    // measured busy times since the last partition, halfway at each list rebuild: the
+    // higher blocks add the lower blocks' cross contacts, and their particles' cache lines
+    // are shared with the block below, so equal work is not equal time. The boundaries do
+    // not change any result: every particle sums its pairs in pair order whatever the
+    // blocks (see computeForces).
     constexpr double particleCost = 0.5;
-    if (int(blockShare_.size()) != nBlocks)
+    if (int(forceBalance_.share.size()) != nBlocks)
     {
-        blockShare_.assign(nBlocks, 1.0/nBlocks);
-        blockBusy_.assign(nBlocks, 0.0);
+        forceBalance_.reset(nBlocks);
+        driftBalance_.reset(nBlocks);
+        finishBalance_.reset(nBlocks);
     }
-    else if (nBlocks > 1)
+    else
     {
-        double speedSum = 0;
-        std::vector<double> speed(nBlocks, 0.0);
-        bool measured = true;
-        for (int b = 0; b < nBlocks; ++b)
-        {
-            measured = measured && blockBusy_[b] > 0 && blockWork_[b] > 0;
-            if (measured) speed[b] = blockWork_[b]/blockBusy_[b];
-            speedSum += speed[b];
-        }
-        if (measured)
-        {
-            for (int b = 0; b < nBlocks; ++b)
-            {
-                // bounded so that one disturbed interval cannot starve a block
-                const double target = std::clamp(speed[b]/speedSum, 0.25/nBlocks, 1.75/nBlocks);
-                blockShare_[b] = 0.5*(blockShare_[b] + target);
-            }
-        }
-        blockBusy_.assign(nBlocks, 0.0);
+        forceBalance_.update();
+        driftBalance_.update();
+        finishBalance_.update();
     }
+    driftBegin_ = driftBalance_.splitParticles(n);
+    finishBegin_ = finishBalance_.splitParticles(n);
 
     blockParticle_.assign(nBlocks + 1, n);
     blockPair_.assign(nBlocks + 1, nPairs);
-    blockWork_.assign(nBlocks, 0.0);
+    std::vector<double>& work = forceBalance_.work;
+    work.assign(nBlocks, 0.0);
     blockParticle_[0] = 0;
     blockPair_[0] = 0;
     {
         const std::vector<int>& first = list_.first();
         const double total = nPairs + particleCost*n;
-        double done = 0, boundary = blockShare_[0]*total;
+        double done = 0, boundary = forceBalance_.share[0]*total;
         int k = 0, block = 0;
         for (int i = 0; i < n; ++i)
         {
@@ -451,13 +494,13 @@ void Simulation::partitionWork()
                 ++block;
                 blockParticle_[block] = i;
                 blockPair_[block] = k;
-                boundary += blockShare_[block]*total;
+                boundary += forceBalance_.share[block]*total;
             }
             const int k0 = k;
             while (k < nPairs && first[k] == i) ++k;
-            const double work = (k - k0) + particleCost;
-            done += work;
-            blockWork_[block] += work;
+            const double w = (k - k0) + particleCost;
+            done += w;
+            work[block] += w;
         }
     }
     blockHist_.resize(nBlocks);
@@ -497,6 +540,7 @@ void Simulation::computeForces(bool checkDisplacements, bool halfKick)
 
     double maxOverlap = 0;
 
+    const double forceStart = balance ? wallSeconds() : 0;
     // Force pass. Block b owns particles [P_b, P_b+1) and the pairs whose first particle it
     // owns; pairs are (i, j)-ordered with i < j, so block b's pairs read particles >= P_b
     // only. Every particle sums its incident pairs in DEcreasing pair order, starting from
@@ -661,7 +705,7 @@ void Simulation::computeForces(bool checkDisplacements, bool halfKick)
             // one block is complete: finish it now (else after the barrier, in parallel with
             // the higher blocks adding their cross contacts)
             if (nBlocks == 1) finish(ownBegin, ownEnd);
-            if (balance) blockBusy_[b] += wallSeconds() - busyStart;
+            if (balance) forceBalance_.busy[b] += wallSeconds() - busyStart;
         }
 
         if (nBlocks > 1)
@@ -669,24 +713,30 @@ void Simulation::computeForces(bool checkDisplacements, bool halfKick)
             #pragma omp barrier
         }
 
+        // the particles' sums are complete once the lower blocks' cross contacts are added
+        // (in decreasing pair order: the higher blocks' lists first); this phase has its
+        // own particle ranges
         for (int b = tid; b < nBlocks && nBlocks > 1; b += team)
         {
-            const double busyStart = balance ? wallSeconds() : 0;
-            const int ownBegin = blockParticle[b], ownEnd = blockParticle[b + 1];
-            for (int lower = b - 1; lower >= 0; --lower)
+            const double busyStart = wallSeconds();
+            const int begin = finishBegin_[b], end = finishBegin_[b + 1];
+            for (int lower = nBlocks - 2; lower >= 0; --lower)
             {
+                if (blockParticle[lower + 1] >= end) continue;   // its j lie below this range
                 for (const CrossContact& c : blockCross_[lower])
                 {
                     const int j = c.j;
-                    if (j < ownBegin || j >= ownEnd) continue;
+                    if (j < begin || j >= end) continue;
                     p.fx[j] -= c.force[0]; p.fy[j] -= c.force[1]; p.fz[j] -= c.force[2];
                     p.tx[j] += c.nCrossFt[0]; p.ty[j] += c.nCrossFt[1]; p.tz[j] += c.nCrossFt[2];
                 }
             }
-            finish(ownBegin, ownEnd);
-            if (balance) blockBusy_[b] += wallSeconds() - busyStart;
+            finish(begin, end);
+            finishBalance_.busy[b] += wallSeconds() - busyStart;
         }
     }
+
+    if (balance) forceBalance_.totalWall += wallSeconds() - forceStart;
 
     // walls (serial: only used for single-impact tests)
     for (std::size_t w = 0; w < walls_.size(); ++w)
@@ -808,9 +858,10 @@ void Simulation::step()
     // the force pass's particle blocks: each thread drifts the particles it integrated and
     // will integrate again, so their cache lines stay in its core
     if (blockParticle_.size() < 2 || blockParticle_.back() != n) partitionWork();
-    const int nBlocks = int(blockParticle_.size()) - 1;
-    const int* blockParticle = blockParticle_.data();
+    const int nBlocks = int(driftBegin_.size()) - 1;
+    const int* blockParticle = driftBegin_.data();
     const bool balance = nBlocks > 1;
+    const double driftStart = balance ? wallSeconds() : 0;
     #pragma omp parallel num_threads(nThreads_) reduction(max:maxDisp2, maxStep2)
     {
         int tid = 0, team = 1;
@@ -849,9 +900,10 @@ void Simulation::step()
                 swy_[i] = p.wy[i] + tyi;
                 swz_[i] = p.wz[i] + tzi;
             }
-            if (balance) blockBusy_[b] += wallSeconds() - busyStart;
+            if (balance) driftBalance_.busy[b] += wallSeconds() - busyStart;
         }
     }
+    if (balance) driftBalance_.totalWall += wallSeconds() - driftStart;
     time_ += dt;
     timeSinceBuild_ += dt;
     if (collisionsEnabled_) collisions_.elapsedTime += dt;

@@ -107,6 +107,25 @@ struct SimulationState
     std::vector<double> pairForce, pairNCrossFt;   // 3 per pair
 };
 
+//- One phase's split of the work among threads: shares of a work model that follow the
+//  measured busy times (work per busy second) halfway at each update.
+struct BlockBalance
+{
+    std::vector<double> share;   // fraction of the work model per block
+    std::vector<double> work;    // work-model units per block at the last split
+    std::vector<double> busy;    // busy seconds per block since the last split
+    std::vector<double> totalBusy;   // busy seconds per block up to the last split
+    double totalWall = 0;            // wall-clock seconds of the phase since the start
+                                     // (force pass: up to the barrier and after it)
+    //- Busy seconds of block b since the start.
+    double busySeconds(int b) const { return totalBusy[b] + busy[b]; }
+
+    void reset(int nBlocks);
+    void update();
+    //- Contiguous particle ranges (begin of each block, then n) by share; particles cost 1.
+    std::vector<int> splitParticles(int n);
+};
+
 class Simulation
 {
 public:
@@ -184,6 +203,13 @@ public:
     //- Restores counts from a checkpoint (statistics must be enabled with the same bins).
     void setCollisionStatistics(const CollisionStatistics& c) { collisions_ = c; collisionsEnabled_ = true; }
 
+    //- Where the time of a multi-threaded run goes, per phase of a step (drift, force pass
+    //  up to the barrier, cross contacts + finish): per thread busy seconds and the
+    //  phase's wall-clock seconds (empty on one thread).
+    const BlockBalance& driftTimings() const { return driftBalance_; }
+    const BlockBalance& forceTimings() const { return forceBalance_; }
+    const BlockBalance& finishTimings() const { return finishBalance_; }
+
     //- Mass-weighted mean velocity of all particles.
     Eigen::Vector3d meanVelocity() const;
 
@@ -221,9 +247,11 @@ private:
     // force-pass blocks: block b owns particles [blockParticle_[b], blockParticle_[b+1]) and
     // the pairs [blockPair_[b], blockPair_[b+1]) whose first particle it owns
     std::vector<int> blockParticle_, blockPair_;
-    // per block: share of the work model (following the measured busy times), work in
-    // the model's units and busy seconds of the force pass and drift since the partition
-    std::vector<double> blockShare_, blockWork_, blockBusy_;
+    // each phase's split among the threads, following measured busy times: the force
+    // pass up to the barrier (blockParticle_, blockPair_), the drift (driftBegin_) and
+    // the cross contacts + finish after the barrier (finishBegin_): particle ranges
+    BlockBalance forceBalance_, driftBalance_, finishBalance_;
+    std::vector<int> driftBegin_, finishBegin_;
     // per block: impact histogram, and the impacts (species pair, energy) in reverse pair
     // order, so energies are summed in pair order whatever the blocks
     struct CollisionRecord { int speciesPair; double energy; };

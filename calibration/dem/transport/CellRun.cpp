@@ -223,6 +223,26 @@ CellRunResult runCell(const CellRunSettings& settings)
                 copy.run(totalSteps);
                 const double wall = std::chrono::duration<double>(clock::now() - t0).count();
                 rates[k] = double(totalSteps)*copy.particles().size()/wall;
+                if (k == 1 && settings.progressEvery > 0 && result.scalingThreads > 1)
+                {
+                    // where the time went, per phase: busy seconds of each thread, wall
+                    const auto show = [&](const char* name, const BlockBalance& t)
+                    {
+                        std::printf("  %s busy", name);
+                        for (std::size_t b = 0; b < t.share.size(); ++b)
+                        {
+                            std::printf(" %.3f", t.busySeconds(int(b)));
+                        }
+                        if (t.totalWall > 0) std::printf(" s, wall %.3f", t.totalWall);
+                        std::printf(" s, shares");
+                        for (const double f : t.share) std::printf(" %.3f", f);
+                        std::printf("\n");
+                    };
+                    std::printf("%s: %d threads, %.3f s:\n", settings.label.c_str(), result.scalingThreads, wall);
+                    show("drift", copy.driftTimings());
+                    show("force pass to the barrier", copy.forceTimings());
+                    show("cross contacts + finish", copy.finishTimings());
+                }
             }
             result.threadScaling.push_back(rates);
             if (settings.progressEvery > 0)
