@@ -5,10 +5,10 @@
 // Lees-Edwards sheared) periodic box, with optional flat walls and a thermostat that
 // holds the granular temperature of a homogeneous cell.
 //
-// Reproducibility: pair forces are computed in parallel into per-pair slots and summed
-// per particle over its pairs in increasing pair order; the pair list is ordered (i, j).
-// No floating-point atomics, so a run is bitwise reproducible for a given seed; the force
-// sums do not even depend on the number of threads.
+// Reproducibility: every particle sums the forces of its pairs in decreasing pair order
+// (the pair list is ordered (i, j)), whatever the threads and their particle ranges. No
+// floating-point atomics, so a run is bitwise reproducible for a given seed; the
+// trajectories do not even depend on the number of threads (computeForces explains how).
 
 #include "ContactLaw.hpp"
 #include "NeighbourList.hpp"
