@@ -429,7 +429,7 @@ void BlockBalance::update()
     busy.assign(nBlocks, 0.0);
 }
 
-std::vector<int> BlockBalance::splitParticles(int n)
+std::vector<int> BlockBalance::splitParticles(int n, int align)
 {
     const int nBlocks = int(share.size());
     std::vector<int> begin(nBlocks + 1, n);
@@ -438,7 +438,8 @@ std::vector<int> BlockBalance::splitParticles(int n)
     for (int b = 1; b < nBlocks; ++b)
     {
         cumulative += share[b - 1];
-        begin[b] = std::clamp(int(std::lround(cumulative*n)), begin[b - 1], n);
+        const int aligned = align*int(std::lround(cumulative*n/align));
+        begin[b] = std::clamp(aligned, begin[b - 1], n);
     }
     for (int b = 0; b < nBlocks; ++b) work[b] = begin[b + 1] - begin[b];
     return begin;
@@ -474,7 +475,7 @@ void Simulation::partitionWork()
         finishBalance_.update();
     }
     driftBegin_ = driftBalance_.splitParticles(n);
-    finishBegin_ = finishBalance_.splitParticles(n);
+    finishBegin_ = finishBalance_.splitParticles(n, thermostatChunk);
 
     blockParticle_.assign(nBlocks + 1, n);
     blockPair_.assign(nBlocks + 1, nPairs);
@@ -529,6 +530,13 @@ void Simulation::computeForces(bool checkDisplacements, bool halfKick)
     const double h = 0.5*dt_;
     const PeriodicBox box = box_;
     const bool kickHere = halfKick && walls_.empty();
+    // the thermostat that follows this pass needs sums over the final velocities
+    const bool thermostatSums = kickHere && settings_.mode == CellMode::thermostatted;
+    if (thermostatSums)
+    {
+        thermostatChunkSums_.resize(std::size_t((n + thermostatChunk - 1)/thermostatChunk));
+    }
+    thermostatSumsReady_ = thermostatSums;
 
     const int nSpeciesPairs = numberOfSpeciesPairs(nSpecies);
     const int nHist = collisionsEnabled_ ? int(collisions_.binEdges.size()) + 1 : 0;
@@ -575,6 +583,20 @@ void Simulation::computeForces(bool checkDisplacements, bool halfKick)
                 const double im = p.invMass[i], ii = p.invInertia[i];
                 p.vx[i] += h*p.fx[i]*im; p.vy[i] += h*p.fy[i]*im; p.vz[i] += h*p.fz[i]*im;
                 p.wx[i] += h*p.tx[i]*ii; p.wy[i] += h*p.ty[i]*ii; p.wz[i] += h*p.tz[i]*ii;
+            }
+            if (!thermostatSums) return;
+            // the thermostat's sums over the final velocities, per fixed chunk (the ranges
+            // are whole chunks), while they are in cache
+            for (int c0 = begin; c0 < end; c0 += thermostatChunk)
+            {
+                double sum[ThermostatSum::size] = {};
+                for (int i = c0; i < std::min(end, c0 + thermostatChunk); ++i)
+                {
+                    const double m = p.mass[i], vx = p.vx[i], vy = p.vy[i], vz = p.vz[i];
+                    sum[0] += m; sum[1] += m*vx; sum[2] += m*vy; sum[3] += m*vz;
+                    sum[4] += vx; sum[5] += vy; sum[6] += vz; sum[7] += vx*vx + vy*vy + vz*vz;
+                }
+                std::copy(sum, sum + ThermostatSum::size, thermostatChunkSums_[c0/thermostatChunk].value);
             }
         };
 
@@ -933,24 +955,47 @@ void Simulation::applyThermostat()
     // of all particles by one factor: T relaxes to the target over tau_T while inelastic
     // collisions keep removing energy; the mean velocity and the species' temperature
     // ratio (non-equipartition) are left to the dynamics.
+    // Sums per fixed chunk of particles (filled by the force pass's finish, or here),
+    // added in chunk order: the same T whatever the threads.
     Particles& p = particles_;
     const int n = int(p.size());
-    const Eigen::Vector3d mean = meanVelocity();
-    double sum = 0;
-    for (int i = 0; i < n; ++i)
+    const int nChunks = (n + thermostatChunk - 1)/thermostatChunk;
+    if (!thermostatSumsReady_)
     {
-        const double cx = p.vx[i] - mean.x(), cy = p.vy[i] - mean.y(), cz = p.vz[i] - mean.z();
-        sum += cx*cx + cy*cy + cz*cz;
+        thermostatChunkSums_.resize(std::size_t(nChunks));
+        for (int c = 0; c < nChunks; ++c)
+        {
+            double* sum = thermostatChunkSums_[c].value;
+            std::fill(sum, sum + ThermostatSum::size, 0.0);
+            for (int i = c*thermostatChunk; i < std::min(n, (c + 1)*thermostatChunk); ++i)
+            {
+                const double m = p.mass[i], vx = p.vx[i], vy = p.vy[i], vz = p.vz[i];
+                sum[0] += m; sum[1] += m*vx; sum[2] += m*vy; sum[3] += m*vz;
+                sum[4] += vx; sum[5] += vy; sum[6] += vz; sum[7] += vx*vx + vy*vy + vz*vz;
+            }
+        }
     }
-    const double T = sum/n;
+    thermostatSumsReady_ = false;
+    double total[ThermostatSum::size] = {};
+    for (int c = 0; c < nChunks; ++c)
+    {
+        for (int k = 0; k < ThermostatSum::size; ++k) total[k] += thermostatChunkSums_[c].value[k];
+    }
+    if (!(total[0] > 0)) return;
+    // mass-weighted mean velocity u; sum |v - u|^2 = sum |v|^2 - 2 u . sum v + n |u|^2
+    const double ux = total[1]/total[0], uy = total[2]/total[0], uz = total[3]/total[0];
+    const double sumC2 =
+        total[7] - 2*(ux*total[4] + uy*total[5] + uz*total[6]) + n*(ux*ux + uy*uy + uz*uz);
+    const double T = sumC2/n;
     if (!(T > 0)) return;
     const double ratio = settings_.targetTemperature/T;
     const double lambda = std::sqrt(std::max(0.0, 1.0 + dt_/settings_.thermostatTime*(ratio - 1.0)));
+    #pragma omp parallel for num_threads(nThreads_) schedule(static) if(nThreads_ > 1)
     for (int i = 0; i < n; ++i)
     {
-        p.vx[i] = mean.x() + lambda*(p.vx[i] - mean.x());
-        p.vy[i] = mean.y() + lambda*(p.vy[i] - mean.y());
-        p.vz[i] = mean.z() + lambda*(p.vz[i] - mean.z());
+        p.vx[i] = ux + lambda*(p.vx[i] - ux);
+        p.vy[i] = uy + lambda*(p.vy[i] - uy);
+        p.vz[i] = uz + lambda*(p.vz[i] - uz);
     }
 }
 

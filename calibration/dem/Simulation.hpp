@@ -123,7 +123,8 @@ struct BlockBalance
     void reset(int nBlocks);
     void update();
     //- Contiguous particle ranges (begin of each block, then n) by share; particles cost 1.
-    std::vector<int> splitParticles(int n);
+    //  Boundaries are multiples of align (but the last).
+    std::vector<int> splitParticles(int n, int align = 1);
 };
 
 class Simulation
@@ -280,6 +281,13 @@ private:
     std::vector<double> dispX_, dispY_, dispZ_;
     double timeSinceBuild_ = 0;
     double radiusGrowthSinceBuild_ = 0;
+
+    // thermostat sums per chunk of thermostatChunk particles: mass, mass x velocity,
+    // velocity, |velocity|^2 (filled by the force pass's finish when it is thermostatted)
+    static constexpr int thermostatChunk = 64;
+    struct ThermostatSum { static constexpr int size = 8; double value[size]; };
+    std::vector<ThermostatSum> thermostatChunkSums_;
+    bool thermostatSumsReady_ = false;
 
     double lastMaxOverlapFraction_ = 0;
     double referenceEnergy_ = 0;

@@ -18,7 +18,7 @@ struct RunResult
     CollisionStatistics collisions;
 };
 
-RunResult shearedRun(int threads, std::uint64_t seed, long steps = 800)
+RunResult shearedRun(int threads, std::uint64_t seed, long steps = 800, bool thermostatted = false)
 {
     const auto species = test::binary(2.0);
     Packing packing = test::packedCell(species, {300, 40}, 0.4, 0.0, 80.0, seed);
@@ -26,8 +26,9 @@ RunResult shearedRun(int threads, std::uint64_t seed, long steps = 800)
     s.contact.restitution = 0.7;
     s.contact.friction = 0.5;
     s.contact.normalStiffness = 2e3;
-    s.mode = CellMode::leesEdwards;
+    s.mode = thermostatted ? CellMode::thermostatted : CellMode::leesEdwards;
     s.shearRate = 80.0;
+    s.targetTemperature = 0.01;
     s.threads = threads;
     Simulation sim(species, s, packing.particles, packing.box);
     sim.enableCollisionStatistics(1e-12, 1e-6, 20);
@@ -68,6 +69,19 @@ TEST(Reproducibility, OneTwoAndThreeThreadsBitwiseIdentical)
         EXPECT_TRUE(bitwiseEqual(a.collisions.energySum, b.collisions.energySum))
             << threads << " threads";
         EXPECT_EQ(a.collisions.histogram, b.collisions.histogram) << threads << " threads";
+    }
+}
+
+TEST(Reproducibility, ThermostattedOneTwoAndThreeThreadsBitwiseIdentical)
+{
+    // the thermostat's sums are filled per fixed chunk by each thread's finish range
+    const RunResult a = shearedRun(1, 5, 3000, true);
+    for (const int threads : {2, 3})
+    {
+        const RunResult b = shearedRun(threads, 5, 3000, true);
+        EXPECT_TRUE(bitwiseEqual(a.particles.vx, b.particles.vx)) << threads << " threads";
+        EXPECT_TRUE(bitwiseEqual(a.particles.z, b.particles.z)) << threads << " threads";
+        EXPECT_TRUE(bitwiseEqual(a.particles.wx, b.particles.wx)) << threads << " threads";
     }
 }
 
