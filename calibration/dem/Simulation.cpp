@@ -28,6 +28,18 @@ double wallSeconds()
 #endif
 }
 
+//- Adds the thermostat's sums over particles [begin, end) to sum: mass, mass x velocity,
+//  velocity, |velocity|^2 (Simulation::ThermostatSum).
+void addThermostatSums(const Particles& p, int begin, int end, double* sum)
+{
+    for (int i = begin; i < end; ++i)
+    {
+        const double m = p.mass[i], vx = p.vx[i], vy = p.vy[i], vz = p.vz[i];
+        sum[0] += m; sum[1] += m*vx; sum[2] += m*vy; sum[3] += m*vz;
+        sum[4] += vx; sum[5] += vy; sum[6] += vz; sum[7] += vx*vx + vy*vy + vz*vz;
+    }
+}
+
 } // namespace
 
 CellMode cellModeFromName(const std::string& name)
@@ -454,13 +466,13 @@ void Simulation::partitionWork()
     // Each phase of a step (drift, force pass up to the barrier, cross contacts + finish
     // after it) splits the particles into one contiguous range per thread. Work model of
     // the force pass: a listed pair (nearly all of them are not touching: distance test
-    // only) costs 1, a particle about 0.5 (measured on the sheared N 3000 cell); of the
-    // others: a particle costs 1. The shares start equal and then follow each phase's
+    // only) costs 1, a particle about 0.5 (measured on the sheared N 3000 cell); in the
+    // other phases every particle costs 1. The shares start equal and then follow each phase's
     // measured busy times since the last partition, halfway at each list rebuild: the
     // higher blocks add the lower blocks' cross contacts, and their particles' cache lines
     // are shared with the block below, so equal work is not equal time. The boundaries do
-    // not change any result: every particle sums its pairs in pair order whatever the
-    // blocks (see computeForces).
+    // not change any result: every particle sums its pairs in decreasing pair order
+    // whatever the blocks (see computeForces).
     constexpr double particleCost = 0.5;
     if (int(forceBalance_.share.size()) != nBlocks)
     {
@@ -558,9 +570,9 @@ void Simulation::computeForces(bool checkDisplacements, bool halfKick)
     //    when j is its own, to j: its own pairs are the highest-numbered pairs of all its
     //    particles, so they come first;
     //  - contacts whose j lies in a higher block ("cross" contacts, listed per block in the
-    //    same decreasing order) come from lower-numbered pairs: after a barrier, the owner
-    //    of j adds them, block b-1's first, down to block 0's, and only then finishes its
-    //    particles (torque, second half kick).
+    //    same decreasing order) come from lower-numbered pairs: after a barrier, the
+    //    thread whose finish range holds j adds them, block b-1's first, down to block
+    //    0's, and only then finishes the particle (torque, second half kick).
     // Slots of touching pairs are always written: stress sampling reads them.
     #pragma omp parallel num_threads(nThreads_) reduction(max:maxOverlap)
     {
@@ -590,12 +602,7 @@ void Simulation::computeForces(bool checkDisplacements, bool halfKick)
             for (int c0 = begin; c0 < end; c0 += thermostatChunk)
             {
                 double sum[ThermostatSum::size] = {};
-                for (int i = c0; i < std::min(end, c0 + thermostatChunk); ++i)
-                {
-                    const double m = p.mass[i], vx = p.vx[i], vy = p.vy[i], vz = p.vz[i];
-                    sum[0] += m; sum[1] += m*vx; sum[2] += m*vy; sum[3] += m*vz;
-                    sum[4] += vx; sum[5] += vy; sum[6] += vz; sum[7] += vx*vx + vy*vy + vz*vz;
-                }
+                addThermostatSums(p, c0, std::min(end, c0 + thermostatChunk), sum);
                 std::copy(sum, sum + ThermostatSum::size, thermostatChunkSums_[c0/thermostatChunk].value);
             }
         };
@@ -967,12 +974,7 @@ void Simulation::applyThermostat()
         {
             double* sum = thermostatChunkSums_[c].value;
             std::fill(sum, sum + ThermostatSum::size, 0.0);
-            for (int i = c*thermostatChunk; i < std::min(n, (c + 1)*thermostatChunk); ++i)
-            {
-                const double m = p.mass[i], vx = p.vx[i], vy = p.vy[i], vz = p.vz[i];
-                sum[0] += m; sum[1] += m*vx; sum[2] += m*vy; sum[3] += m*vz;
-                sum[4] += vx; sum[5] += vy; sum[6] += vz; sum[7] += vx*vx + vy*vy + vz*vz;
-            }
+            addThermostatSums(p, c*thermostatChunk, std::min(n, (c + 1)*thermostatChunk), sum);
         }
     }
     thermostatSumsReady_ = false;
