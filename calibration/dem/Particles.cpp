@@ -14,6 +14,9 @@ void Particles::resize(std::size_t n)
         a->resize(n, 0.0);
     }
     species.resize(n, 0);
+    const std::size_t old = id.size();
+    id.resize(n);
+    for (std::size_t k = old; k < n; ++k) id[k] = int(k);
 }
 
 void Particles::reorder(const std::vector<int>& order)
@@ -30,6 +33,8 @@ void Particles::reorder(const std::vector<int>& order)
     std::vector<int> speciesBuffer(n);
     for (std::size_t k = 0; k < n; ++k) speciesBuffer[k] = species[order[k]];
     species.swap(speciesBuffer);
+    for (std::size_t k = 0; k < n; ++k) speciesBuffer[k] = id[order[k]];
+    id.swap(speciesBuffer);
 }
 
 void Particles::add(double px, double py, double pz, double r, double m, int speciesId)

@@ -26,6 +26,9 @@ struct Particles
     std::vector<double> tx, ty, tz;
     std::vector<double> radius, mass, inertia, invMass, invInertia;
     std::vector<int> species;
+    // stable identity: the particle's index when the Simulation started (a simulation that
+    // renumbers its particles spatially keeps it; Simulation::indexOfId maps it back)
+    std::vector<int> id;
 
     std::size_t size() const { return x.size(); }
 
@@ -37,7 +40,8 @@ struct Particles
     //- Sets radius and derived mass and moment of inertia (solid sphere) from density.
     void setRadius(std::size_t i, double r, double density);
 
-    //- Renumbers the particles: new particle k is old particle order[k] (a permutation).
+    //- Renumbers the particles: new particle k is old particle order[k] (a permutation);
+    //  ids travel with their particles.
     void reorder(const std::vector<int>& order);
 };
 

@@ -206,6 +206,10 @@ Simulation::Simulation
     {
         box_.wrap(particles_.x[i], particles_.y[i], particles_.z[i], particles_.vx[i]);
     }
+    // ids: the particles' indices now
+    particles_.id.resize(std::size_t(n));
+    for (int i = 0; i < n; ++i) particles_.id[i] = i;
+    indexIds();
     for (auto* a : {&svx_, &svy_, &svz_, &swx_, &swy_, &swz_, &dispX_, &dispY_, &dispZ_})
     {
         a->assign(n, 0.0);
@@ -293,6 +297,13 @@ void Simulation::importState(const SimulationState& st)
         }
     }
     particles_ = st.particles;
+    if (particles_.id.size() != n)
+    {
+        // a checkpoint without ids (written before they existed): never renumbered
+        particles_.id.resize(n);
+        for (std::size_t i = 0; i < n; ++i) particles_.id[i] = int(i);
+    }
+    indexIds();
     time_ = st.time;
     stepCount_ = st.stepCount;
     box_.offset = st.shearOffset;
@@ -361,33 +372,109 @@ void Simulation::scaleRadii(double factor)
     else listValid_ = false;
 }
 
+void Simulation::indexIds()
+{
+    const int n = int(particles_.size());
+    indexOfId_.assign(std::size_t(n), -1);
+    for (int i = 0; i < n; ++i)
+    {
+        const int id = particles_.id[i];
+        if (id < 0 || id >= n || indexOfId_[id] >= 0)
+        {
+            throw std::invalid_argument
+            (
+                "particle ids must be a permutation of 0.." + std::to_string(n - 1)
+              + " (particle " + std::to_string(i) + " has id " + std::to_string(id) + ")"
+            );
+        }
+        indexOfId_[id] = i;
+    }
+}
+
+std::vector<int> Simulation::renumberParticles()
+{
+    Particles& p = particles_;
+    const int n = int(p.size());
+    std::vector<int> order(static_cast<std::size_t>(n));
+    for (int i = 0; i < n; ++i) order[i] = i;
+    std::sort
+    (
+        order.begin(), order.end(),
+        [&p](int a, int b) { return p.y[a] < p.y[b] || (p.y[a] == p.y[b] && p.id[a] < p.id[b]); }
+    );
+    p.reorder(order);
+    // the synchronised velocities of this step are read by the force pass that follows
+    std::vector<double> buffer(static_cast<std::size_t>(n));
+    for (auto* a : {&svx_, &svy_, &svz_, &swx_, &swy_, &swz_})
+    {
+        for (int k = 0; k < n; ++k) buffer[k] = (*a)[order[k]];
+        a->swap(buffer);
+    }
+    std::vector<int> newIndex(static_cast<std::size_t>(n));
+    for (int k = 0; k < n; ++k) newIndex[order[k]] = k;
+    indexIds();
+    return newIndex;
+}
+
 void Simulation::rebuildNeighbourList()
 {
-    const std::vector<int> oldFirst = list_.first();
-    const std::vector<int> oldSecond = list_.second();
-    const std::vector<ContactHistory> oldHistory = std::move(history_);
+    // the contact histories to carry over: those of touching pairs (the others hold no
+    // state: a contact that ends is cleared)
+    struct Carried { int i, j; ContactHistory history; };
+    std::vector<Carried> carried;
+    {
+        const std::vector<int>& f = list_.first();
+        const std::vector<int>& s = list_.second();
+        for (std::size_t k = 0; k < history_.size() && k < f.size(); ++k)
+        {
+            if (history_[k].touching) carried.push_back({f[k], s[k], history_[k]});
+        }
+    }
+    if (renumberPending_)
+    {
+        renumberPending_ = false;
+        const std::vector<int> newIndex = renumberParticles();
+        for (Carried& c : carried)
+        {
+            int a = newIndex[c.i], b = newIndex[c.j];
+            if (a > b)
+            {
+                // i and j swap roles: the tangential force on (the new) i and the normal
+                // j -> i change sign
+                std::swap(a, b);
+                for (int d = 0; d < 3; ++d)
+                {
+                    c.history.ft[d] = -c.history.ft[d];
+                    c.history.n[d] = -c.history.n[d];
+                }
+            }
+            c.i = a;
+            c.j = b;
+        }
+        std::sort
+        (
+            carried.begin(), carried.end(),
+            [](const Carried& x, const Carried& y) { return x.i < y.i || (x.i == y.i && x.j < y.j); }
+        );
+    }
 
     list_.build(particles_, box_, skin_, nThreads_);
 
-    // carry contact histories over: both lists are sorted by (i, j)
+    // carry the histories over: both lists are sorted by (i, j)
     const std::size_t nPairs = list_.size();
     history_.assign(nPairs, ContactHistory());
     std::size_t o = 0;
     const std::vector<int>& f = list_.first();
     const std::vector<int>& s = list_.second();
-    for (std::size_t k = 0; k < nPairs && o < oldFirst.size(); ++k)
+    for (std::size_t k = 0; k < nPairs && o < carried.size(); ++k)
     {
-        while
-        (
-            o < oldFirst.size()
-         && (oldFirst[o] < f[k] || (oldFirst[o] == f[k] && oldSecond[o] < s[k]))
-        )
+        while (o < carried.size() && (carried[o].i < f[k] || (carried[o].i == f[k] && carried[o].j < s[k])))
         {
             ++o;
         }
-        if (o < oldFirst.size() && oldFirst[o] == f[k] && oldSecond[o] == s[k])
+        if (o < carried.size() && carried[o].i == f[k] && carried[o].j == s[k])
         {
-            history_[k] = oldHistory[o];
+            history_[k] = carried[o].history;
         }
     }
     for (auto* a : {&pfx_, &pfy_, &pfz_, &pcx_, &pcy_, &pcz_}) a->assign(nPairs, 0.0);
@@ -946,6 +1033,11 @@ void Simulation::step()
         {
             listValid_ = false;
         }
+    }
+    if (settings_.renumberEvery > 0 && walls_.empty() && (stepCount_ + 1) % settings_.renumberEvery == 0)
+    {
+        renumberPending_ = true;
+        listValid_ = false;
     }
     // forces F^{n+1} and the second half kick
     computeForces(false, true);

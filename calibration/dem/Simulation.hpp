@@ -50,6 +50,11 @@ struct SimulationSettings
     double energyBlowUpFactor = 1e3;       // stop when E_kin > factor x reference
     bool checkTimeStep = true;             // refuse dt above the recommended maximum
     int threads = 0;                       // OpenMP threads; 0: runtime default
+    //- Steps between spatial renumberings of the particles (in order of y, the threads'
+    //  ranges then stay slabs although the particles diffuse; Particles::id is kept);
+    //  0: never. On a fixed step schedule, so a resumed run renumbers where the
+    //  uninterrupted one did (bitwise resume). Not with walls.
+    long renumberEvery = 0;
 };
 
 //- Flat frictional wall (infinitely heavy): point on the plane and unit normal into the domain.
@@ -177,6 +182,8 @@ public:
     double timeStep() const { return dt_; }
     const NeighbourList& neighbourList() const { return list_; }
     std::vector<int> speciesCounts() const;
+    //- Current index of the particle with this id (Particles::id).
+    int indexOfId(int id) const { return indexOfId_[id]; }
     void setTargetTemperature(double T) { settings_.targetTemperature = T; }
     void setMode(CellMode mode) { settings_.mode = mode; }
 
@@ -220,6 +227,10 @@ private:
     //  half kick v += dt/2 F/m (fused into the force pass, particle by particle)
     void computeForces(bool checkDisplacements = true, bool halfKick = false);
     void rebuildNeighbourList();
+    //- Renumbers the particles in order of y (ties by id); returns the old -> new index map.
+    std::vector<int> renumberParticles();
+    //- Rebuilds indexOfId_ from particles_.id; throws if the ids are not a permutation.
+    void indexIds();
     //- Splits particles (and their pairs as first particle) into one contiguous block per
     //  thread for the force pass (see computeForces).
     void partitionWork();
@@ -239,6 +250,9 @@ private:
     double time_ = 0;
     long stepCount_ = 0;
     int nThreads_ = 1;
+
+    std::vector<int> indexOfId_;
+    bool renumberPending_ = false;   // renumber at the next list build (renumberEvery)
 
     NeighbourList list_;
     bool listValid_ = false;

@@ -117,7 +117,11 @@ CellRunResult runCell(const CellRunSettings& settings)
         );
     }
 
-    Simulation sim(species, sim0, packing.particles, packing.box);
+    // the particles are renumbered in y every 1000 steps (the threads' ranges stay slabs);
+    // the per-particle measurements below follow ids
+    SimulationSettings simSettings = sim0;
+    if (simSettings.renumberEvery == 0) simSettings.renumberEvery = 1000;
+    Simulation sim(species, simSettings, packing.particles, packing.box);
     result.timeStep = sim.timeStep();
     result.speciesCounts = sim.speciesCounts();
     const double dt = sim.timeStep();
@@ -161,10 +165,12 @@ CellRunResult runCell(const CellRunSettings& settings)
     const double sampleInterval = settings.sampleEvery*dt;
     const long msdEvery = std::max(1L, (nSamples + settings.maxMsdFrames - 1)/settings.maxMsdFrames);
 
+    // per species: the particle ids, in increasing id (the same on resume, whatever the
+    // particles' current order)
     std::vector<std::vector<int>> members(nSpecies);
-    for (int i = 0; i < int(sim.particles().size()); ++i)
+    for (int id = 0; id < int(sim.particles().size()); ++id)
     {
-        members[sim.particles().species[i]].push_back(i);
+        members[sim.particles().species[sim.indexOfId(id)]].push_back(id);
     }
     std::vector<correlation::MultipleTauCorrelator> vacf;
     for (int s = 0; s < nSpecies; ++s)
@@ -215,7 +221,7 @@ CellRunResult runCell(const CellRunSettings& settings)
             std::array<double, 2> rates{};
             for (int k = 0; k < 2; ++k)
             {
-                SimulationSettings st = sim0;
+                SimulationSettings st = simSettings;
                 st.threads = k == 0 ? 1 : result.scalingThreads;
                 Simulation copy(species, st, start.particles, sim.box());
                 copy.importState(start);
@@ -298,7 +304,7 @@ CellRunResult runCell(const CellRunSettings& settings)
             Eigen::ArrayXXd v(m.size(), 3);
             for (std::size_t k = 0; k < m.size(); ++k)
             {
-                const Eigen::Vector3d c = x.fluctuatingVelocity(m[k]);
+                const Eigen::Vector3d c = x.fluctuatingVelocity(x.indexOfId(m[k]));
                 v(k, 0) = c.x(); v(k, 1) = c.y(); v(k, 2) = c.z();
             }
             vacf[s].add(v);
@@ -307,7 +313,8 @@ CellRunResult runCell(const CellRunSettings& settings)
                 Eigen::MatrixX3d pos(m.size(), 3);
                 for (std::size_t k = 0; k < m.size(); ++k)
                 {
-                    pos(k, 0) = p.ux[m[k]]; pos(k, 1) = p.uy[m[k]]; pos(k, 2) = p.uz[m[k]];
+                    const int i = x.indexOfId(m[k]);
+                    pos(k, 0) = p.ux[i]; pos(k, 1) = p.uy[i]; pos(k, 2) = p.uz[i];
                 }
                 frames[s].push_back(pos);
             }

@@ -55,6 +55,7 @@ void addSimulationState(io::Checkpoint& out, const Simulation& simulation)
         c.vectors["particles/" + particleArrayNames()[a]] = st.particles.*particleArrays()[a];
     }
     c.integerVectors["particles/species"].assign(st.particles.species.begin(), st.particles.species.end());
+    c.integerVectors["particles/id"].assign(st.particles.id.begin(), st.particles.id.end());
     c.integerVectors["pairs/first"].assign(st.pairFirst.begin(), st.pairFirst.end());
     c.integerVectors["pairs/second"].assign(st.pairSecond.begin(), st.pairSecond.end());
     const std::size_t n = st.history.size();
@@ -108,6 +109,12 @@ void loadSimulationState(const io::Checkpoint& c, Simulation& simulation, const 
     }
     const auto& species = ivec("particles_species");
     st.particles.species.assign(species.begin(), species.end());
+    // ids (absent in checkpoints of engines that never renumbered: the indices)
+    if (c.integerVectors.count("particles_id"))
+    {
+        const auto& id = ivec("particles_id");
+        st.particles.id.assign(id.begin(), id.end());
+    }
     const auto& first = ivec("pairs_first");
     const auto& second = ivec("pairs_second");
     st.pairFirst.assign(first.begin(), first.end());
