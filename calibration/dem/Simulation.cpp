@@ -210,7 +210,7 @@ Simulation::Simulation
     particles_.id.resize(std::size_t(n));
     for (int i = 0; i < n; ++i) particles_.id[i] = i;
     indexIds();
-    for (auto* a : {&svx_, &svy_, &svz_, &swx_, &swy_, &swz_, &dispX_, &dispY_, &dispZ_})
+    for (auto* a : {&fPrevX_, &fPrevY_, &fPrevZ_, &tPrevX_, &tPrevY_, &tPrevZ_, &dispX_, &dispY_, &dispZ_})
     {
         a->assign(n, 0.0);
     }
@@ -317,7 +317,7 @@ void Simulation::importState(const SimulationState& st)
         pfx_[k] = st.pairForce[3*k]; pfy_[k] = st.pairForce[3*k + 1]; pfz_[k] = st.pairForce[3*k + 2];
         pcx_[k] = st.pairNCrossFt[3*k]; pcy_[k] = st.pairNCrossFt[3*k + 1]; pcz_[k] = st.pairNCrossFt[3*k + 2];
     }
-    for (auto* a : {&svx_, &svy_, &svz_, &swx_, &swy_, &swz_, &dispX_, &dispY_, &dispZ_})
+    for (auto* a : {&fPrevX_, &fPrevY_, &fPrevZ_, &tPrevX_, &tPrevY_, &tPrevZ_, &dispX_, &dispY_, &dispZ_})
     {
         a->assign(n, 0.0);
     }
@@ -331,12 +331,7 @@ void Simulation::importState(const SimulationState& st)
 
 void Simulation::refreshForces()
 {
-    const std::size_t n = particles_.size();
-    for (std::size_t i = 0; i < n; ++i)
-    {
-        svx_[i] = particles_.vx[i]; svy_[i] = particles_.vy[i]; svz_[i] = particles_.vz[i];
-        swx_[i] = particles_.wx[i]; swy_[i] = particles_.wy[i]; swz_[i] = particles_.wz[i];
-    }
+    // halfKick false: the synchronised velocities are the current ones
     computeForces();
 }
 
@@ -402,14 +397,9 @@ std::vector<int> Simulation::renumberParticles()
         order.begin(), order.end(),
         [&p](int a, int b) { return p.y[a] < p.y[b] || (p.y[a] == p.y[b] && p.id[a] < p.id[b]); }
     );
+    // (the forces F^n travel with the particles: the force pass after this rebuild forms
+    // the synchronised velocities from them)
     p.reorder(order);
-    // the synchronised velocities of this step are read by the force pass that follows
-    std::vector<double> buffer(static_cast<std::size_t>(n));
-    for (auto* a : {&svx_, &svy_, &svz_, &swx_, &swy_, &swz_})
-    {
-        for (int k = 0; k < n; ++k) buffer[k] = (*a)[order[k]];
-        a->swap(buffer);
-    }
     std::vector<int> newIndex(static_cast<std::size_t>(n));
     for (int k = 0; k < n; ++k) newIndex[order[k]] = k;
     indexIds();
@@ -613,6 +603,26 @@ void Simulation::partitionWork()
 void Simulation::computeForces(bool checkDisplacements, bool halfKick)
 {
     if (!listValid_ || (checkDisplacements && neighbourListExpired())) rebuildNeighbourList();
+    // F^n and the torques move to fPrev/tPrev (pointer swaps; the pass writes the new ones
+    // in the other buffers): the dashpots use the synchronised velocities
+    // v^{n+1/2} + dt/2 F^n/m formed from them, pair by pair (no per-particle arrays written
+    // in the drift). Without the half kick (a refresh) they are the current velocities.
+    {
+        Particles& q = particles_;
+        q.fx.swap(fPrevX_); q.fy.swap(fPrevY_); q.fz.swap(fPrevZ_);
+        q.tx.swap(tPrevX_); q.ty.swap(tPrevY_); q.tz.swap(tPrevZ_);
+        if (q.fx.size() != q.size())
+        {
+            for (auto* a : {&q.fx, &q.fy, &q.fz, &q.tx, &q.ty, &q.tz}) a->assign(q.size(), 0.0);
+        }
+        if (!halfKick)
+        {
+            for (auto* a : {&fPrevX_, &fPrevY_, &fPrevZ_, &tPrevX_, &tPrevY_, &tPrevZ_})
+            {
+                std::fill(a->begin(), a->end(), 0.0);
+            }
+        }
+    }
     // outside step() positions may have been edited: rebuild the near list
     if (checkDisplacements || nearDrift_ + 2*nearRadiusGrowth_ >= nearSkin_) nearValid_ = false;
     const bool rebuildNear = !nearValid_;
@@ -629,6 +639,12 @@ void Simulation::computeForces(bool checkDisplacements, bool halfKick)
     const double h = 0.5*dt_;
     const PeriodicBox box = box_;
     const bool kickHere = halfKick && walls_.empty();
+    const double* fPrevX = fPrevX_.data();
+    const double* fPrevY = fPrevY_.data();
+    const double* fPrevZ = fPrevZ_.data();
+    const double* tPrevX = tPrevX_.data();
+    const double* tPrevY = tPrevY_.data();
+    const double* tPrevZ = tPrevZ_.data();
     // the thermostat that follows this pass needs sums over the final velocities
     const bool thermostatSums = kickHere && settings_.mode == CellMode::thermostatted;
     if (thermostatSums)
@@ -770,13 +786,19 @@ void Simulation::computeForces(bool checkDisplacements, bool halfKick)
                 kin.dvHalf[0] = p.vx[i] - p.vx[j] + shiftVx;
                 kin.dvHalf[1] = p.vy[i] - p.vy[j];
                 kin.dvHalf[2] = p.vz[i] - p.vz[j];
-                kin.dvSync[0] = svx_[i] - svx_[j] + shiftVx;
-                kin.dvSync[1] = svy_[i] - svy_[j];
-                kin.dvSync[2] = svz_[i] - svz_[j];
+                const double imi = p.invMass[i], imj = p.invMass[j];
+                const double iii = p.invInertia[i], iij = p.invInertia[j];
+                kin.dvSync[0] = (p.vx[i] + h*fPrevX[i]*imi) - (p.vx[j] + h*fPrevX[j]*imj) + shiftVx;
+                kin.dvSync[1] = (p.vy[i] + h*fPrevY[i]*imi) - (p.vy[j] + h*fPrevY[j]*imj);
+                kin.dvSync[2] = (p.vz[i] + h*fPrevZ[i]*imi) - (p.vz[j] + h*fPrevZ[j]*imj);
                 kin.wHalfI[0] = p.wx[i]; kin.wHalfI[1] = p.wy[i]; kin.wHalfI[2] = p.wz[i];
                 kin.wHalfJ[0] = p.wx[j]; kin.wHalfJ[1] = p.wy[j]; kin.wHalfJ[2] = p.wz[j];
-                kin.wSyncI[0] = swx_[i]; kin.wSyncI[1] = swy_[i]; kin.wSyncI[2] = swz_[i];
-                kin.wSyncJ[0] = swx_[j]; kin.wSyncJ[1] = swy_[j]; kin.wSyncJ[2] = swz_[j];
+                kin.wSyncI[0] = p.wx[i] + h*tPrevX[i]*iii;
+                kin.wSyncI[1] = p.wy[i] + h*tPrevY[i]*iii;
+                kin.wSyncI[2] = p.wz[i] + h*tPrevZ[i]*iii;
+                kin.wSyncJ[0] = p.wx[j] + h*tPrevX[j]*iij;
+                kin.wSyncJ[1] = p.wy[j] + h*tPrevY[j]*iij;
+                kin.wSyncJ[2] = p.wz[j] + h*tPrevZ[j]*iij;
 
                 const int si = p.species[i], sj = p.species[j];
                 const PairCoefficients& coeffs = law_.pair(si, sj);
@@ -875,9 +897,14 @@ void Simulation::computeForces(bool checkDisplacements, bool halfKick)
             for (int a = 0; a < 3; ++a) kin.r[a] = s*wall.normal[a];
             kin.radiusI = p.radius[i]; kin.radiusJ = 0;
             kin.dvHalf[0] = p.vx[i]; kin.dvHalf[1] = p.vy[i]; kin.dvHalf[2] = p.vz[i];
-            kin.dvSync[0] = svx_[i]; kin.dvSync[1] = svy_[i]; kin.dvSync[2] = svz_[i];
+            const double im = p.invMass[i], ii = p.invInertia[i];
+            kin.dvSync[0] = p.vx[i] + 0.5*dt_*fPrevX_[i]*im;
+            kin.dvSync[1] = p.vy[i] + 0.5*dt_*fPrevY_[i]*im;
+            kin.dvSync[2] = p.vz[i] + 0.5*dt_*fPrevZ_[i]*im;
             kin.wHalfI[0] = p.wx[i]; kin.wHalfI[1] = p.wy[i]; kin.wHalfI[2] = p.wz[i];
-            kin.wSyncI[0] = swx_[i]; kin.wSyncI[1] = swy_[i]; kin.wSyncI[2] = swz_[i];
+            kin.wSyncI[0] = p.wx[i] + 0.5*dt_*tPrevX_[i]*ii;
+            kin.wSyncI[1] = p.wy[i] + 0.5*dt_*tPrevY_[i]*ii;
+            kin.wSyncI[2] = p.wz[i] + 0.5*dt_*tPrevZ_[i]*ii;
             for (int a = 0; a < 3; ++a) kin.wHalfJ[a] = kin.wSyncJ[a] = 0;
             const ContactResult res =
                 evaluateContact(model, law_.wall(p.species[i]), kin, h, dt);
@@ -1009,12 +1036,6 @@ void Simulation::step()
                 p.x[i] += ddx; p.y[i] += ddy; p.z[i] += ddz;
 
                 box.wrap(p.x[i], p.y[i], p.z[i], p.vx[i]);
-                svx_[i] = p.vx[i] + fxm;
-                svy_[i] = p.vy[i] + fym;
-                svz_[i] = p.vz[i] + fzm;
-                swx_[i] = p.wx[i] + txi;
-                swy_[i] = p.wy[i] + tyi;
-                swz_[i] = p.wz[i] + tzi;
             }
             if (balance) driftBalance_.busy[b] += wallSeconds() - busyStart;
         }

@@ -289,8 +289,9 @@ private:
     std::vector<std::vector<CrossContact>> blockCross_;
     std::vector<std::vector<ContactHistory>> wallHistory_;    // per wall, per particle
 
-    // synchronised velocity estimates v^{n+1/2} + dt/2 a^n
-    std::vector<double> svx_, svy_, svz_, swx_, swy_, swz_;
+    // forces and torques of the previous evaluation (F^n) during a force pass, for the
+    // synchronised velocity estimates v^{n+1/2} + dt/2 F^n/m (swapped with Particles::fx..tz)
+    std::vector<double> fPrevX_, fPrevY_, fPrevZ_, tPrevX_, tPrevY_, tPrevZ_;
     // peculiar displacement since the last list build (for the rebuild criterion)
     std::vector<double> dispX_, dispY_, dispZ_;
     double timeSinceBuild_ = 0;
