@@ -687,14 +687,20 @@ void Simulation::computeForces(bool checkDisplacements, bool halfKick)
         // torque from the sum of n x F_t, then the second half kick
         auto finish = [&](int begin, int end)
         {
+            if (!kickHere)
+            {
+                for (int i = begin; i < end; ++i)
+                {
+                    const double r = p.radius[i];
+                    p.tx[i] = -r*p.tx[i]; p.ty[i] = -r*p.ty[i]; p.tz[i] = -r*p.tz[i];
+                }
+                return;
+            }
+            // one pass: torque, then the kick
             for (int i = begin; i < end; ++i)
             {
                 const double r = p.radius[i];
                 p.tx[i] = -r*p.tx[i]; p.ty[i] = -r*p.ty[i]; p.tz[i] = -r*p.tz[i];
-            }
-            if (!kickHere) return;
-            for (int i = begin; i < end; ++i)
-            {
                 const double im = p.invMass[i], ii = p.invInertia[i];
                 p.vx[i] += h*p.fx[i]*im; p.vy[i] += h*p.fy[i]*im; p.vz[i] += h*p.fz[i]*im;
                 p.wx[i] += h*p.tx[i]*ii; p.wy[i] += h*p.ty[i]*ii; p.wz[i] += h*p.tz[i]*ii;
