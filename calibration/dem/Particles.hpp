@@ -15,7 +15,8 @@ struct Particles
 {
     // full-step positions, wrapped into the periodic box
     std::vector<double> x, y, z;
-    // unwrapped displacement since the start (for mean-square displacements)
+    // unwrapped displacement since the start (for mean-square displacements); peculiar:
+    // under Lees-Edwards shear x excludes the streaming (the non-affine displacement)
     std::vector<double> ux, uy, uz;
     // velocities (lab frame; Lees-Edwards: including the streaming velocity)
     std::vector<double> vx, vy, vz;

@@ -210,7 +210,7 @@ Simulation::Simulation
     particles_.id.resize(std::size_t(n));
     for (int i = 0; i < n; ++i) particles_.id[i] = i;
     indexIds();
-    for (auto* a : {&fPrevX_, &fPrevY_, &fPrevZ_, &tPrevX_, &tPrevY_, &tPrevZ_, &dispX_, &dispY_, &dispZ_})
+    for (auto* a : {&fPrevX_, &fPrevY_, &fPrevZ_, &tPrevX_, &tPrevY_, &tPrevZ_, &uBuildX_, &uBuildY_, &uBuildZ_})
     {
         a->assign(n, 0.0);
     }
@@ -317,7 +317,7 @@ void Simulation::importState(const SimulationState& st)
         pfx_[k] = st.pairForce[3*k]; pfy_[k] = st.pairForce[3*k + 1]; pfz_[k] = st.pairForce[3*k + 2];
         pcx_[k] = st.pairNCrossFt[3*k]; pcy_[k] = st.pairNCrossFt[3*k + 1]; pcz_[k] = st.pairNCrossFt[3*k + 2];
     }
-    for (auto* a : {&fPrevX_, &fPrevY_, &fPrevZ_, &tPrevX_, &tPrevY_, &tPrevZ_, &dispX_, &dispY_, &dispZ_})
+    for (auto* a : {&fPrevX_, &fPrevY_, &fPrevZ_, &tPrevX_, &tPrevY_, &tPrevZ_, &uBuildX_, &uBuildY_, &uBuildZ_})
     {
         a->assign(n, 0.0);
     }
@@ -341,8 +341,10 @@ bool Simulation::neighbourListExpired() const
     double max2 = 0;
     for (std::size_t i = 0; i < n; ++i)
     {
-        const double d2 = dispX_[i]*dispX_[i] + dispY_[i]*dispY_[i] + dispZ_[i]*dispZ_[i];
-        max2 = std::max(max2, d2);
+        const double dx = particles_.ux[i] - uBuildX_[i];
+        const double dy = particles_.uy[i] - uBuildY_[i];
+        const double dz = particles_.uz[i] - uBuildZ_[i];
+        max2 = std::max(max2, dx*dx + dy*dy + dz*dz);
     }
     // relative displacement of any pair: two peculiar displacements plus the relative
     // streaming across at most one cutoff in y
@@ -473,9 +475,9 @@ void Simulation::rebuildNeighbourList()
     for (std::size_t k = 0; k < nPairs; ++k) active_[k] = history_[k].touching ? 1 : 0;
     partitionWork();
     nearValid_ = false;
-    std::fill(dispX_.begin(), dispX_.end(), 0.0);
-    std::fill(dispY_.begin(), dispY_.end(), 0.0);
-    std::fill(dispZ_.begin(), dispZ_.end(), 0.0);
+    uBuildX_ = particles_.ux;
+    uBuildY_ = particles_.uy;
+    uBuildZ_ = particles_.uz;
     timeSinceBuild_ = 0;
     radiusGrowthSinceBuild_ = 0;
     listValid_ = true;
@@ -1033,12 +1035,13 @@ void Simulation::step()
                 const double peculiarDdx = ddx - dt*shearRate*(p.y[i] - yMid);
                 const double step2 = peculiarDdx*peculiarDdx + ddy*ddy + ddz*ddz;
                 if (step2 > maxStep2) maxStep2 = step2;
-                dispX_[i] += peculiarDdx;
-                dispY_[i] += ddy;
-                dispZ_[i] += ddz;
-                const double d2 = dispX_[i]*dispX_[i] + dispY_[i]*dispY_[i] + dispZ_[i]*dispZ_[i];
+                // u: peculiar (x without the streaming), so u - u at the list build is the
+                // displacement the Verlet criterion needs (no separate array written)
+                p.ux[i] += peculiarDdx; p.uy[i] += ddy; p.uz[i] += ddz;
+                const double ex = p.ux[i] - uBuildX_[i], ey = p.uy[i] - uBuildY_[i];
+                const double ez = p.uz[i] - uBuildZ_[i];
+                const double d2 = ex*ex + ey*ey + ez*ez;
                 if (d2 > maxDisp2) maxDisp2 = d2;
-                p.ux[i] += ddx; p.uy[i] += ddy; p.uz[i] += ddz;
                 p.x[i] += ddx; p.y[i] += ddy; p.z[i] += ddz;
 
                 box.wrap(p.x[i], p.y[i], p.z[i], p.vx[i]);
