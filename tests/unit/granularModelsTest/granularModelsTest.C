@@ -673,18 +673,27 @@ TEST(diffusivity, tabulatedRefusesIncompleteOrForeignFiles)
 }
 
 
+//- Engine eta (positive, kg^2 m s^-3 scale) of the tabulated-eta tests
+double etaEngine(double phi, double x, double T)
+{
+    return 1e-9*x*std::sqrt(T)*phi;
+}
+
+//- A calibration table with constant D and etaEngine, in constant/<name>
+void writeEtaTable(const word& name)
+{
+    syntheticTable table;
+    table.D = [](double, double, double) { return 1e-5; };
+    table.eta = etaEngine;
+    table.write(constantFile(name));
+}
+
+
 TEST(kineticSieving, tabulatedEtaInKinematicUnits)
 {
     // Engine eta, positive: the table holds eta converted to m2/s at each
     // condition (its phi, x, measured T) with the mixture's d and rho
-    const auto etaEngine = [](double phi, double x, double T)
-    {
-        return 1e-9*x*std::sqrt(T)*phi;
-    };
-    syntheticTable table;
-    table.D = [](double, double, double) { return 1e-5; };
-    table.eta = etaEngine;
-    table.write(constantFile("calibrationEta.h5"));
+    writeEtaTable("calibrationEta.h5");
 
     const calibrationTable eta
     (
@@ -709,14 +718,7 @@ TEST(kineticSieving, tabulatedEtaDrift)
 {
     // The calibrated sieving model in mode tabulated: the drift flux uses
     // the table's eta of the coarse at the cell's state
-    const auto etaEngine = [](double phi, double x, double T)
-    {
-        return 1e-9*x*std::sqrt(T)*phi;
-    };
-    syntheticTable table;
-    table.D = [](double, double, double) { return 1e-5; };
-    table.eta = etaEngine;
-    table.write(constantFile("calibrationEtaDrift.h5"));
+    writeEtaTable("calibrationEtaDrift.h5");
 
     setFields(0.32, 0.08);   // phi 0.4, x 0.2
     const shearWithTemperature shear(1);
