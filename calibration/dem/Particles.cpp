@@ -22,7 +22,7 @@ void Particles::resize(std::size_t n)
 void Particles::reorder(const std::vector<int>& order)
 {
     const std::size_t n = size();
-    std::vector<double> buffer(n);
+    ParticleArray buffer(n);
     for (auto* a : {&x, &y, &z, &ux, &uy, &uz, &vx, &vy, &vz, &wx, &wy, &wz,
                     &fx, &fy, &fz, &tx, &ty, &tz, &radius, &mass, &inertia,
                     &invMass, &invInertia})

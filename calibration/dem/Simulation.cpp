@@ -40,6 +40,71 @@ void addThermostatSums(const Particles& p, int begin, int end, double* sum)
     }
 }
 
+//- The first half of a velocity Verlet step for particles [begin, end): half kick with
+//  their forces F^n, drift, Lees-Edwards wrap (box: with the offset at the new time); their
+//  peculiar displacements in this step and since the list build (uBuild) raise maxStep2
+//  and maxDisp2.
+void driftRange
+(
+    Particles& p, int begin, int end, double dt, const PeriodicBox& boxNow,
+    const ParticleArray& uBuildXs, const ParticleArray& uBuildYs, const ParticleArray& uBuildZs,
+    double& maxDisp2, double& maxStep2
+)
+{
+    // locals and restrict pointers: the particle stores cannot alias the constants or the
+    // maxima, so they stay in registers
+    const PeriodicBox box = boxNow;
+    const double h = 0.5*dt, shearRate = box.shearRate, yMid = 0.5*box.ly;
+    double disp2Max = maxDisp2, step2Max = maxStep2;
+    double* __restrict x = p.x.data();
+    double* __restrict y = p.y.data();
+    double* __restrict z = p.z.data();
+    double* __restrict vx = p.vx.data();
+    double* __restrict vy = p.vy.data();
+    double* __restrict vz = p.vz.data();
+    double* __restrict wx = p.wx.data();
+    double* __restrict wy = p.wy.data();
+    double* __restrict wz = p.wz.data();
+    double* __restrict ux = p.ux.data();
+    double* __restrict uy = p.uy.data();
+    double* __restrict uz = p.uz.data();
+    const double* __restrict fx = p.fx.data();
+    const double* __restrict fy = p.fy.data();
+    const double* __restrict fz = p.fz.data();
+    const double* __restrict tx = p.tx.data();
+    const double* __restrict ty = p.ty.data();
+    const double* __restrict tz = p.tz.data();
+    const double* __restrict invMass = p.invMass.data();
+    const double* __restrict invInertia = p.invInertia.data();
+    const double* __restrict uBuildX = uBuildXs.data();
+    const double* __restrict uBuildY = uBuildYs.data();
+    const double* __restrict uBuildZ = uBuildZs.data();
+    for (int i = begin; i < end; ++i)
+    {
+        const double im = invMass[i], ii = invInertia[i];
+        const double fxm = h*fx[i]*im, fym = h*fy[i]*im, fzm = h*fz[i]*im;
+        const double txi = h*tx[i]*ii, tyi = h*ty[i]*ii, tzi = h*tz[i]*ii;
+        vx[i] += fxm; vy[i] += fym; vz[i] += fzm;
+        wx[i] += txi; wy[i] += tyi; wz[i] += tzi;
+
+        const double ddx = dt*vx[i], ddy = dt*vy[i], ddz = dt*vz[i];
+        const double peculiarDdx = ddx - dt*shearRate*(y[i] - yMid);
+        const double step2 = peculiarDdx*peculiarDdx + ddy*ddy + ddz*ddz;
+        if (step2 > step2Max) step2Max = step2;
+        // u: peculiar (x without the streaming), so u - u at the list build is the
+        // displacement the Verlet criterion needs (no separate array written)
+        ux[i] += peculiarDdx; uy[i] += ddy; uz[i] += ddz;
+        const double ex = ux[i] - uBuildX[i], ey = uy[i] - uBuildY[i], ez = uz[i] - uBuildZ[i];
+        const double d2 = ex*ex + ey*ey + ez*ez;
+        if (d2 > disp2Max) disp2Max = d2;
+        x[i] += ddx; y[i] += ddy; z[i] += ddz;
+
+        box.wrap(x[i], y[i], z[i], vx[i]);
+    }
+    maxDisp2 = disp2Max;
+    maxStep2 = step2Max;
+}
+
 } // namespace
 
 CellMode cellModeFromName(const std::string& name)
@@ -565,7 +630,10 @@ void Simulation::partitionWork()
         driftBalance_.update();
         finishBalance_.update();
     }
-    driftBegin_ = driftBalance_.splitParticles(n);
+    // ranges start at cache-line multiples (no line of a particle array written by two
+    // threads in one phase), the finish's at whole thermostat chunks
+    static_assert(thermostatChunk % particlesPerCacheLine == 0);
+    driftBegin_ = driftBalance_.splitParticles(n, particlesPerCacheLine);
     finishBegin_ = finishBalance_.splitParticles(n, thermostatChunk);
 
     blockParticle_.assign(nBlocks + 1, n);
@@ -581,7 +649,7 @@ void Simulation::partitionWork()
         int k = 0, block = 0;
         for (int i = 0; i < n; ++i)
         {
-            while (done >= boundary && block < nBlocks - 1)
+            while (done >= boundary && block < nBlocks - 1 && i % particlesPerCacheLine == 0)
             {
                 ++block;
                 blockParticle_[block] = i;
@@ -995,19 +1063,12 @@ void Simulation::step()
 {
     Particles& p = particles_;
     const int n = int(p.size());
-    const double h = 0.5*dt_;
     const double dt = dt_;
-    const double shearRate = box_.shearRate;
-    const double yMid = 0.5*box_.ly;
 
-    // one pass: kick, drift, Lees-Edwards wrap (with the offset at the new time),
-    // synchronised velocity estimate, largest peculiar displacement since the last build
-    // and in this step
+    // the first half of the step: kick, drift, Lees-Edwards wrap (with the offset at the
+    // new time), largest peculiar displacement since the last build and in this step
     box_.advanceShear(dt);
-    const PeriodicBox box = box_;
     double maxDisp2 = 0, maxStep2 = 0;
-    // the force pass's particle blocks: each thread drifts the particles it integrated and
-    // will integrate again, so their cache lines stay in its core
     if (blockParticle_.size() < 2 || blockParticle_.back() != n) partitionWork();
     const int nBlocks = int(driftBegin_.size()) - 1;
     const int* blockParticle = driftBegin_.data();
@@ -1023,29 +1084,11 @@ void Simulation::step()
         for (int b = tid; b < nBlocks; b += team)
         {
             const double busyStart = balance ? wallSeconds() : 0;
-            for (int i = blockParticle[b]; i < blockParticle[b + 1]; ++i)
-            {
-                const double im = p.invMass[i], ii = p.invInertia[i];
-                const double fxm = h*p.fx[i]*im, fym = h*p.fy[i]*im, fzm = h*p.fz[i]*im;
-                const double txi = h*p.tx[i]*ii, tyi = h*p.ty[i]*ii, tzi = h*p.tz[i]*ii;
-                p.vx[i] += fxm; p.vy[i] += fym; p.vz[i] += fzm;
-                p.wx[i] += txi; p.wy[i] += tyi; p.wz[i] += tzi;
-
-                const double ddx = dt*p.vx[i], ddy = dt*p.vy[i], ddz = dt*p.vz[i];
-                const double peculiarDdx = ddx - dt*shearRate*(p.y[i] - yMid);
-                const double step2 = peculiarDdx*peculiarDdx + ddy*ddy + ddz*ddz;
-                if (step2 > maxStep2) maxStep2 = step2;
-                // u: peculiar (x without the streaming), so u - u at the list build is the
-                // displacement the Verlet criterion needs (no separate array written)
-                p.ux[i] += peculiarDdx; p.uy[i] += ddy; p.uz[i] += ddz;
-                const double ex = p.ux[i] - uBuildX_[i], ey = p.uy[i] - uBuildY_[i];
-                const double ez = p.uz[i] - uBuildZ_[i];
-                const double d2 = ex*ex + ey*ey + ez*ez;
-                if (d2 > maxDisp2) maxDisp2 = d2;
-                p.x[i] += ddx; p.y[i] += ddy; p.z[i] += ddz;
-
-                box.wrap(p.x[i], p.y[i], p.z[i], p.vx[i]);
-            }
+            driftRange
+            (
+                p, blockParticle[b], blockParticle[b + 1], dt, box_,
+                uBuildX_, uBuildY_, uBuildZ_, maxDisp2, maxStep2
+            );
             if (balance) driftBalance_.busy[b] += wallSeconds() - busyStart;
         }
     }

@@ -291,10 +291,10 @@ private:
 
     // forces and torques of the previous evaluation (F^n) during a force pass, for the
     // synchronised velocity estimates v^{n+1/2} + dt/2 F^n/m (swapped with Particles::fx..tz)
-    std::vector<double> fPrevX_, fPrevY_, fPrevZ_, tPrevX_, tPrevY_, tPrevZ_;
+    ParticleArray fPrevX_, fPrevY_, fPrevZ_, tPrevX_, tPrevY_, tPrevZ_;
     // Particles::u at the last list build (u - uBuild: the peculiar displacement since,
     // for the rebuild criterion)
-    std::vector<double> uBuildX_, uBuildY_, uBuildZ_;
+    ParticleArray uBuildX_, uBuildY_, uBuildZ_;
     double timeSinceBuild_ = 0;
     double radiusGrowthSinceBuild_ = 0;
 

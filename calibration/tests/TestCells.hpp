@@ -5,6 +5,8 @@
 #include "InitialState.hpp"
 #include "Simulation.hpp"
 
+#include <cstring>
+
 namespace sdf::dem::test
 {
 
@@ -41,6 +43,13 @@ inline Packing packedCell
 inline double totalEnergy(const Simulation& sim)
 {
     return sim.translationalKineticEnergy() + sim.rotationalKineticEnergy() + sim.elasticEnergy();
+}
+
+//- Same size and the same bits.
+template<class Allocator>
+bool bitwiseEqual(const std::vector<double, Allocator>& a, const std::vector<double, Allocator>& b)
+{
+    return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size()*sizeof(double)) == 0;
 }
 
 } // namespace sdf::dem::test

@@ -10,16 +10,6 @@
 
 using namespace sdf::dem;
 
-namespace
-{
-
-bool bitwiseEqual(const std::vector<double>& a, const std::vector<double>& b)
-{
-    return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size()*sizeof(double)) == 0;
-}
-
-} // namespace
-
 TEST(Checkpoint, ResumedRunIsBitwiseIdentical)
 {
     const auto species = test::binary(2.0);
@@ -50,9 +40,9 @@ TEST(Checkpoint, ResumedRunIsBitwiseIdentical)
     EXPECT_LE((resumed.totalStress() - first.totalStress()).norm(), 0.0);
     resumed.run(700);
 
-    EXPECT_TRUE(bitwiseEqual(resumed.particles().x, reference.particles().x));
-    EXPECT_TRUE(bitwiseEqual(resumed.particles().vx, reference.particles().vx));
-    EXPECT_TRUE(bitwiseEqual(resumed.particles().wz, reference.particles().wz));
+    EXPECT_TRUE(test::bitwiseEqual(resumed.particles().x, reference.particles().x));
+    EXPECT_TRUE(test::bitwiseEqual(resumed.particles().vx, reference.particles().vx));
+    EXPECT_TRUE(test::bitwiseEqual(resumed.particles().wz, reference.particles().wz));
     EXPECT_EQ(resumed.box().offset, reference.box().offset);
 }
 

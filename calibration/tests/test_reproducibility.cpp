@@ -55,10 +55,6 @@ RunResult shearedRun
     return {sim.particles(), sim.collisionStatistics()};
 }
 
-bool bitwiseEqual(const std::vector<double>& a, const std::vector<double>& b)
-{
-    return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size()*sizeof(double)) == 0;
-}
 
 } // namespace
 
@@ -66,9 +62,9 @@ TEST(Reproducibility, SameSeedSameThreadsBitwiseIdentical)
 {
     const Particles a = shearedRun(2, 3).particles;
     const Particles b = shearedRun(2, 3).particles;
-    EXPECT_TRUE(bitwiseEqual(a.x, b.x));
-    EXPECT_TRUE(bitwiseEqual(a.vy, b.vy));
-    EXPECT_TRUE(bitwiseEqual(a.wz, b.wz));
+    EXPECT_TRUE(test::bitwiseEqual(a.x, b.x));
+    EXPECT_TRUE(test::bitwiseEqual(a.vy, b.vy));
+    EXPECT_TRUE(test::bitwiseEqual(a.wz, b.wz));
 }
 
 TEST(Reproducibility, OneTwoAndThreeThreadsBitwiseIdentical)
@@ -78,14 +74,14 @@ TEST(Reproducibility, OneTwoAndThreeThreadsBitwiseIdentical)
     for (const int threads : {2, 3})
     {
         const RunResult b = shearedRun(threads, 3, 4000);
-        EXPECT_TRUE(bitwiseEqual(a.particles.x, b.particles.x)) << threads << " threads";
-        EXPECT_TRUE(bitwiseEqual(a.particles.vx, b.particles.vx)) << threads << " threads";
-        EXPECT_TRUE(bitwiseEqual(a.particles.wy, b.particles.wy)) << threads << " threads";
-        EXPECT_TRUE(bitwiseEqual(a.particles.fz, b.particles.fz)) << threads << " threads";
+        EXPECT_TRUE(test::bitwiseEqual(a.particles.x, b.particles.x)) << threads << " threads";
+        EXPECT_TRUE(test::bitwiseEqual(a.particles.vx, b.particles.vx)) << threads << " threads";
+        EXPECT_TRUE(test::bitwiseEqual(a.particles.wy, b.particles.wy)) << threads << " threads";
+        EXPECT_TRUE(test::bitwiseEqual(a.particles.fz, b.particles.fz)) << threads << " threads";
         // impact energies are summed in pair order whatever the blocks
         EXPECT_GT(a.collisions.counts[0], 0);
         EXPECT_EQ(a.collisions.counts, b.collisions.counts) << threads << " threads";
-        EXPECT_TRUE(bitwiseEqual(a.collisions.energySum, b.collisions.energySum))
+        EXPECT_TRUE(test::bitwiseEqual(a.collisions.energySum, b.collisions.energySum))
             << threads << " threads";
         EXPECT_EQ(a.collisions.histogram, b.collisions.histogram) << threads << " threads";
     }
@@ -98,9 +94,9 @@ TEST(Reproducibility, ThermostattedOneTwoAndThreeThreadsBitwiseIdentical)
     for (const int threads : {2, 3})
     {
         const RunResult b = shearedRun(threads, 5, 3000, true);
-        EXPECT_TRUE(bitwiseEqual(a.particles.vx, b.particles.vx)) << threads << " threads";
-        EXPECT_TRUE(bitwiseEqual(a.particles.z, b.particles.z)) << threads << " threads";
-        EXPECT_TRUE(bitwiseEqual(a.particles.wx, b.particles.wx)) << threads << " threads";
+        EXPECT_TRUE(test::bitwiseEqual(a.particles.vx, b.particles.vx)) << threads << " threads";
+        EXPECT_TRUE(test::bitwiseEqual(a.particles.z, b.particles.z)) << threads << " threads";
+        EXPECT_TRUE(test::bitwiseEqual(a.particles.wx, b.particles.wx)) << threads << " threads";
     }
 }
 
@@ -139,8 +135,8 @@ TEST(Reproducibility, RenumberedOneTwoAndThreeThreadsBitwiseIdentical)
     {
         const RunResult b = shearedRun(threads, 3, 3000, false, 500);
         EXPECT_EQ(a.particles.id, b.particles.id) << threads << " threads";
-        EXPECT_TRUE(bitwiseEqual(a.particles.x, b.particles.x)) << threads << " threads";
-        EXPECT_TRUE(bitwiseEqual(a.particles.wz, b.particles.wz)) << threads << " threads";
+        EXPECT_TRUE(test::bitwiseEqual(a.particles.x, b.particles.x)) << threads << " threads";
+        EXPECT_TRUE(test::bitwiseEqual(a.particles.wz, b.particles.wz)) << threads << " threads";
     }
 }
 
@@ -148,5 +144,5 @@ TEST(Reproducibility, DifferentSeedsDiffer)
 {
     const Particles a = shearedRun(1, 3).particles;
     const Particles b = shearedRun(1, 4).particles;
-    EXPECT_FALSE(bitwiseEqual(a.x, b.x));
+    EXPECT_FALSE(test::bitwiseEqual(a.x, b.x));
 }

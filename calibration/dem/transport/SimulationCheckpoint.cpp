@@ -10,9 +10,9 @@ namespace sdf::dem
 namespace
 {
 
-const std::vector<std::vector<double> Particles::*>& particleArrays()
+const std::vector<ParticleArray Particles::*>& particleArrays()
 {
-    static const std::vector<std::vector<double> Particles::*> arrays =
+    static const std::vector<ParticleArray Particles::*> arrays =
     {
         &Particles::x, &Particles::y, &Particles::z, &Particles::ux, &Particles::uy,
         &Particles::uz, &Particles::vx, &Particles::vy, &Particles::vz, &Particles::wx,
@@ -52,7 +52,8 @@ void addSimulationState(io::Checkpoint& out, const Simulation& simulation)
     c.strings["format"] = "sdf_dem SimulationState 1";
     for (std::size_t a = 0; a < particleArrays().size(); ++a)
     {
-        c.vectors["particles/" + particleArrayNames()[a]] = st.particles.*particleArrays()[a];
+        const ParticleArray& values = st.particles.*particleArrays()[a];
+        c.vectors["particles/" + particleArrayNames()[a]].assign(values.begin(), values.end());
     }
     c.integerVectors["particles/species"].assign(st.particles.species.begin(), st.particles.species.end());
     c.integerVectors["particles/id"].assign(st.particles.id.begin(), st.particles.id.end());
@@ -105,7 +106,8 @@ void loadSimulationState(const io::Checkpoint& c, Simulation& simulation, const 
     SimulationState st;
     for (std::size_t a = 0; a < particleArrays().size(); ++a)
     {
-        st.particles.*particleArrays()[a] = vec("particles_" + particleArrayNames()[a]);
+        const std::vector<double>& values = vec("particles_" + particleArrayNames()[a]);
+        (st.particles.*particleArrays()[a]).assign(values.begin(), values.end());
     }
     const auto& species = ivec("particles_species");
     st.particles.species.assign(species.begin(), species.end());
