@@ -110,6 +110,25 @@ void NeighbourList::build(const Particles& p, const PeriodicBox& box, double ski
         secondLocal_.assign(nThreads, {});
     }
 
+    // contiguous ranges of i in thread order (the lists are joined in that order), split
+    // by the pairs each particle had in the last list plus one: the particles at the
+    // bottom of a y-numbered cell scan the wrapped top row too (all of higher index), so
+    // equal particle counts gave the first thread ~1.5 x the work
+    std::vector<int> rangeBegin(nThreads + 1, n);
+    rangeBegin[0] = 0;
+    {
+        std::vector<int> pairsOf(n, 0);
+        for (const int i : first_) if (i < n) ++pairsOf[i];
+        const double total = double(first_.size()) + n;
+        double done = 0;
+        int t = 1;
+        for (int i = 0; i < n && t < nThreads; ++i)
+        {
+            while (t < nThreads && done >= total*t/nThreads) rangeBegin[t++] = i;
+            done += pairsOf[i] + 1;
+        }
+    }
+
     #pragma omp parallel num_threads(nThreads)
     {
         int tid = 0;
@@ -122,9 +141,7 @@ void NeighbourList::build(const Particles& p, const PeriodicBox& box, double ski
         sl.clear();
         std::vector<int> partners;
 
-        // static schedule without chunk: contiguous blocks of i in thread order
-        #pragma omp for schedule(static)
-        for (int i = 0; i < n; ++i)
+        for (int i = rangeBegin[tid]; i < rangeBegin[tid + 1]; ++i)
         {
             const int c = particleCell_[i];
             partners.clear();

@@ -45,7 +45,8 @@ private:
     std::vector<int> cellStart_, cellParticles_, particleCell_;
     std::vector<int> stencilStart_, stencilCells_;          // neighbour cells per cell
     std::vector<std::array<double, 4>> cellPosition_;       // x, y, z, r in cell order
-    std::vector<std::vector<int>> firstLocal_, secondLocal_;   // per-thread pairs
+    // per-thread pairs (own cache lines: the threads append to them)
+    std::vector<CacheLinePadded<std::vector<int>>> firstLocal_, secondLocal_;
     double cutoff_ = 0;
     long builds_ = 0;
 };

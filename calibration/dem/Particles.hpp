@@ -4,41 +4,14 @@
 // Structure-of-arrays particle storage: each quantity is one contiguous array so that the
 // hot loops stream through memory and vectorise.
 
+#include "CacheLine.hpp"
+
 #include <cstddef>
 #include <cstdint>
-#include <new>
 #include <vector>
 
 namespace sdf::dem
 {
-
-//- Allocator of cache-line aligned storage: the threads' particle ranges start at
-//  multiples of particlesPerCacheLine, so no cache line of a particle array is written
-//  by two threads (false sharing at the range boundaries cost the streaming loops up to
-//  a third of their speed on two threads).
-template<class T>
-struct CacheLineAllocator
-{
-    using value_type = T;
-    static constexpr std::size_t alignment = 64;
-
-    CacheLineAllocator() = default;
-    template<class U>
-    CacheLineAllocator(const CacheLineAllocator<U>&) noexcept {}
-
-    T* allocate(std::size_t n)
-    {
-        return static_cast<T*>(::operator new(n*sizeof(T), std::align_val_t(alignment)));
-    }
-    void deallocate(T* p, std::size_t) noexcept
-    {
-        ::operator delete(p, std::align_val_t(alignment));
-    }
-    template<class U>
-    bool operator==(const CacheLineAllocator<U>&) const noexcept { return true; }
-    template<class U>
-    bool operator!=(const CacheLineAllocator<U>&) const noexcept { return false; }
-};
 
 //- One per-particle quantity (cache-line aligned).
 using ParticleArray = std::vector<double, CacheLineAllocator<double>>;

@@ -475,6 +475,7 @@ std::vector<int> Simulation::renumberParticles()
 
 void Simulation::rebuildNeighbourList()
 {
+    const double start = wallSeconds();
     // the contact histories to carry over: those of touching pairs (the others hold no
     // state: a contact that ends is cleared)
     struct Carried { int i, j; ContactHistory history; };
@@ -546,6 +547,8 @@ void Simulation::rebuildNeighbourList()
     timeSinceBuild_ = 0;
     radiusGrowthSinceBuild_ = 0;
     listValid_ = true;
+    ++rebuildTimings_.count;
+    rebuildTimings_.wallSeconds += wallSeconds() - start;
 }
 
 void BlockBalance::reset(int nBlocks)

@@ -218,6 +218,11 @@ public:
     const BlockBalance& forceTimings() const { return forceBalance_; }
     const BlockBalance& finishTimings() const { return finishBalance_; }
 
+    //- Neighbour-list rebuilds so far (renumbering, list, histories carried, blocks) and
+    //  their wall-clock seconds.
+    struct RebuildTimings { long count = 0; double wallSeconds = 0; };
+    const RebuildTimings& rebuildTimings() const { return rebuildTimings_; }
+
     //- Mass-weighted mean velocity of all particles.
     Eigen::Vector3d meanVelocity() const;
 
@@ -270,23 +275,23 @@ private:
     // per block: impact histogram, and the impacts (species pair, energy) in reverse pair
     // order, so energies are summed in pair order whatever the blocks
     struct CollisionRecord { int speciesPair; double energy; };
-    std::vector<std::vector<long>> blockHist_;
-    std::vector<std::vector<CollisionRecord>> blockImpacts_;
+    std::vector<CacheLinePadded<std::vector<long>>> blockHist_;
+    std::vector<CacheLinePadded<std::vector<CollisionRecord>>> blockImpacts_;
     // Near list: per block, the listed pairs (ascending) whose gap was below nearSkin_ at
     // its build; no other listed pair can touch while the relative displacement bound
     // nearDrift_ (+ radius growth) stays below nearSkin_, so the per-step distance test
     // runs over these only. Rebuilt from the Verlet list (a pass over all its pairs).
-    std::vector<std::vector<int>> nearPairs_;
+    std::vector<CacheLinePadded<std::vector<int>>> nearPairs_;
     bool nearValid_ = false;
     double nearSkin_ = 0;
     double nearDrift_ = 0;
     double nearRadiusGrowth_ = 0;
-    std::vector<std::vector<int>> blockContacts_;   // per block: touching pairs this step, in pair order
+    std::vector<CacheLinePadded<std::vector<int>>> blockContacts_;   // per block: touching pairs this step, in pair order
     // per block: its touching pairs whose second particle j lies in a higher block, in
     // decreasing pair order, with their force on i and n x F_t (added by j's owner after
     // the barrier; a compact copy, so few cache lines cross between the cores)
     struct CrossContact { int j; double force[3]; double nCrossFt[3]; };
-    std::vector<std::vector<CrossContact>> blockCross_;
+    std::vector<CacheLinePadded<std::vector<CrossContact>>> blockCross_;
     std::vector<std::vector<ContactHistory>> wallHistory_;    // per wall, per particle
 
     // forces and torques of the previous evaluation (F^n) during a force pass, for the
@@ -295,6 +300,7 @@ private:
     // Particles::u at the last list build (u - uBuild: the peculiar displacement since,
     // for the rebuild criterion)
     ParticleArray uBuildX_, uBuildY_, uBuildZ_;
+    RebuildTimings rebuildTimings_;
     double timeSinceBuild_ = 0;
     double radiusGrowthSinceBuild_ = 0;
 

@@ -249,6 +249,14 @@ CellRunResult runCell(const CellRunSettings& settings)
                     show("force pass to the barrier", copy.forceTimings());
                     show("cross contacts + finish", copy.finishTimings());
                 }
+                if (settings.progressEvery > 0 && result.scalingThreads > 1)
+                {
+                    std::printf
+                    (
+                        "  %d thread(s): %ld list rebuilds, wall %.3f s\n", st.threads,
+                        copy.rebuildTimings().count, copy.rebuildTimings().wallSeconds
+                    );
+                }
             }
             result.threadScaling.push_back(rates);
             if (settings.progressEvery > 0)
