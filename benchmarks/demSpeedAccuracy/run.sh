@@ -10,7 +10,9 @@
 #   benchmarks/demSpeedAccuracy/run.sh ["500 1000 2000 4000 8000"] ["5 10 20"] [referenceN]
 #
 # The engine binary is copied first, so a rebuild during the (long) run does not mix
-# two engine versions in one table.
+# two engine versions in one table. The reference runs on SDF_DEM_REFERENCE_THREADS
+# threads (default 2): trajectories do not depend on the thread count (dem.reproducibility),
+# only its CPU time does (reported as measured).
 #------------------------------------------------------------------------------
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)"
@@ -26,9 +28,11 @@ refN=${3:-8000}
 gd=100
 longest=${strains[-1]}
 
-run() {  # N strain tag
+refThreads=${SDF_DEM_REFERENCE_THREADS:-2}
+
+run() {  # N strain tag [threads]
     local t; t=$(awk -v s=$2 -v g=$gd 'BEGIN{printf "%.6g", s/g}')
-    /usr/bin/time -f "%U %S" -o "$out/$3.time" "$cli" "$cfg" threads=1 particles=$1 \
+    /usr/bin/time -f "%U %S" -o "$out/$3.time" "$cli" "$cfg" threads=${4:-1} particles=$1 \
         samplingTime=$t progressEvery=0 > "$out/$3.log"
 }
 parse() {  # tag -> D err cpu
@@ -41,12 +45,12 @@ print(m.group(1), m.group(2), u + s)
 PY
 }
 
-run $refN $((10*longest)) reference
+run $refN $((10*longest)) reference $refThreads
 read -r Dref Eref Cref <<<"$(parse reference)"
 report="$out/report.txt"
 {
 echo "engine commit $(cat "$out/engineCommit")"
-echo "reference: N = $refN, strain $((10*longest)): D_fine = $Dref +- $Eref m2/s (CPU $Cref s)"
+echo "reference: N = $refN, strain $((10*longest)), $refThreads thread(s): D_fine = $Dref +- $Eref m2/s (CPU $Cref s)"
 printf "%-6s %-7s %-12s %-10s %-9s %-8s\n" N strain D_fine stderr "err/ref" "CPU[s]"
 } > "$report"
 for N in "${Ns[@]}"; do
