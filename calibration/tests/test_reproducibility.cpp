@@ -146,3 +146,15 @@ TEST(Reproducibility, DifferentSeedsDiffer)
     const Particles b = shearedRun(1, 4).particles;
     EXPECT_FALSE(test::bitwiseEqual(a.x, b.x));
 }
+
+TEST(Reproducibility, ParticleArraysStartOnCacheLines)
+{
+    // thread ranges start at multiples of particlesPerCacheLine; only with line-aligned
+    // arrays does that keep every cache line to one thread (docs/dem.md "Cache lines")
+    const Particles p = shearedRun(2, 5, 50, false, 20).particles;
+    for (const ParticleArray* a : {&p.x, &p.ux, &p.vx, &p.wz, &p.fx, &p.tz, &p.invMass})
+    {
+        EXPECT_EQ(reinterpret_cast<std::uintptr_t>(a->data()) % cacheLineBytes, 0u);
+    }
+    EXPECT_EQ(std::size_t(particlesPerCacheLine)*sizeof(double), cacheLineBytes);
+}
