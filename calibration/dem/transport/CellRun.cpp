@@ -69,6 +69,80 @@ correlation::MultipleTauSettings correlatorSettings()
     return m;
 }
 
+//- Runs the state of sim for nSteps on 1 and on settings' threads, alternately,
+//  threadScalingRounds times (the same equilibrated state each time); stores the
+//  particle-steps per second in result.threadScaling and prints each round (and, with
+//  progress on, each phase's busy times and the list rebuilds).
+void measureThreadScaling
+(
+    const CellRunSettings& settings,
+    const std::vector<Species>& species,
+    const SimulationSettings& simSettings,
+    const Simulation& sim,
+    long nSteps,
+    CellRunResult& result
+)
+{
+    using clock = std::chrono::steady_clock;
+    const SimulationState start = sim.exportState();
+    result.scalingThreads = settings.simulation.threads;
+#ifdef _OPENMP
+    if (result.scalingThreads <= 0) result.scalingThreads = omp_get_max_threads();
+#endif
+    result.scalingThreads = std::max(1, result.scalingThreads);
+    const bool showPhases = settings.progressEvery > 0 && result.scalingThreads > 1;
+    // where the time went, per phase: busy seconds of each thread, wall
+    const auto show = [](const char* name, const BlockBalance& t)
+    {
+        std::printf("  %s busy", name);
+        for (std::size_t b = 0; b < t.share.size(); ++b) std::printf(" %.3f", t.busySeconds(int(b)));
+        if (t.totalWall > 0) std::printf(" s, wall %.3f", t.totalWall);
+        std::printf(" s, shares");
+        for (const double f : t.share) std::printf(" %.3f", f);
+        std::printf("\n");
+    };
+    for (int round = 0; round < settings.threadScalingRounds; ++round)
+    {
+        std::array<double, 2> rates{};
+        for (int k = 0; k < 2; ++k)
+        {
+            SimulationSettings st = simSettings;
+            st.threads = k == 0 ? 1 : result.scalingThreads;
+            Simulation copy(species, st, start.particles, sim.box());
+            copy.importState(start);
+            const auto t0 = clock::now();
+            copy.run(nSteps);
+            const double wall = std::chrono::duration<double>(clock::now() - t0).count();
+            rates[k] = double(nSteps)*copy.particles().size()/wall;
+            if (!showPhases) continue;
+            if (k == 1)
+            {
+                std::printf("%s: %d threads, %.3f s:\n", settings.label.c_str(), result.scalingThreads, wall);
+                show("drift", copy.driftTimings());
+                show("force pass to the barrier", copy.forceTimings());
+                show("cross contacts + finish", copy.finishTimings());
+            }
+            std::printf
+            (
+                "  %d thread(s): %ld list rebuilds, wall %.3f s\n", st.threads,
+                copy.rebuildTimings().count, copy.rebuildTimings().wallSeconds
+            );
+        }
+        result.threadScaling.push_back(rates);
+        if (settings.progressEvery > 0)
+        {
+            std::printf
+            (
+                "%s: thread scaling round %d/%d: 1 thread %.4g, %d threads %.4g "
+                "particle-steps/s, speed-up %.3f\n",
+                settings.label.c_str(), round + 1, settings.threadScalingRounds, rates[0],
+                result.scalingThreads, rates[1], rates[1]/rates[0]
+            );
+            std::fflush(stdout);
+        }
+    }
+}
+
 } // namespace
 
 CellRunResult runCell(const CellRunSettings& settings)
@@ -209,68 +283,7 @@ CellRunResult runCell(const CellRunSettings& settings)
     long sample = 0;
     if (settings.threadScalingRounds > 0)
     {
-        // the same equilibrated state on 1 and on N threads, alternately
-        const SimulationState start = sim.exportState();
-        result.scalingThreads = sim0.threads;
-#ifdef _OPENMP
-        if (result.scalingThreads <= 0) result.scalingThreads = omp_get_max_threads();
-#endif
-        result.scalingThreads = std::max(1, result.scalingThreads);
-        for (int round = 0; round < settings.threadScalingRounds; ++round)
-        {
-            std::array<double, 2> rates{};
-            for (int k = 0; k < 2; ++k)
-            {
-                SimulationSettings st = simSettings;
-                st.threads = k == 0 ? 1 : result.scalingThreads;
-                Simulation copy(species, st, start.particles, sim.box());
-                copy.importState(start);
-                const auto t0 = clock::now();
-                copy.run(totalSteps);
-                const double wall = std::chrono::duration<double>(clock::now() - t0).count();
-                rates[k] = double(totalSteps)*copy.particles().size()/wall;
-                if (k == 1 && settings.progressEvery > 0 && result.scalingThreads > 1)
-                {
-                    // where the time went, per phase: busy seconds of each thread, wall
-                    const auto show = [&](const char* name, const BlockBalance& t)
-                    {
-                        std::printf("  %s busy", name);
-                        for (std::size_t b = 0; b < t.share.size(); ++b)
-                        {
-                            std::printf(" %.3f", t.busySeconds(int(b)));
-                        }
-                        if (t.totalWall > 0) std::printf(" s, wall %.3f", t.totalWall);
-                        std::printf(" s, shares");
-                        for (const double f : t.share) std::printf(" %.3f", f);
-                        std::printf("\n");
-                    };
-                    std::printf("%s: %d threads, %.3f s:\n", settings.label.c_str(), result.scalingThreads, wall);
-                    show("drift", copy.driftTimings());
-                    show("force pass to the barrier", copy.forceTimings());
-                    show("cross contacts + finish", copy.finishTimings());
-                }
-                if (settings.progressEvery > 0 && result.scalingThreads > 1)
-                {
-                    std::printf
-                    (
-                        "  %d thread(s): %ld list rebuilds, wall %.3f s\n", st.threads,
-                        copy.rebuildTimings().count, copy.rebuildTimings().wallSeconds
-                    );
-                }
-            }
-            result.threadScaling.push_back(rates);
-            if (settings.progressEvery > 0)
-            {
-                std::printf
-                (
-                    "%s: thread scaling round %d/%d: 1 thread %.4g, %d threads %.4g "
-                    "particle-steps/s, speed-up %.3f\n",
-                    settings.label.c_str(), round + 1, settings.threadScalingRounds, rates[0],
-                    result.scalingThreads, rates[1], rates[1]/rates[0]
-                );
-                std::fflush(stdout);
-            }
-        }
+        measureThreadScaling(settings, species, simSettings, sim, totalSteps, result);
     }
     if (settings.throughputOnly)
     {
