@@ -1,4 +1,5 @@
 #include "correlation/FftCorrelator.hpp"
+#include "correlation/detail/FrameRange.hpp"
 #include "correlation/detail/PaddedFft.hpp"
 #include "correlation/Statistics.hpp"
 
@@ -166,31 +167,7 @@ Eigen::MatrixX3d vectorAutocorrelation
     std::size_t end
 )
 {
-    if (begin >= end || end > frames.size())
-    {
-        throw std::invalid_argument
-        (
-            "vectorAutocorrelation: bad frame range [" + std::to_string(begin)
-          + ", " + std::to_string(end) + ") of " + std::to_string(frames.size())
-        );
-    }
-    const Eigen::Index particles = frames[begin].rows();
-    for (std::size_t t = begin; t < end; ++t)
-    {
-        if (frames[t].rows() != particles)
-        {
-            throw std::invalid_argument
-            (
-                "vectorAutocorrelation: frame " + std::to_string(t) + " has "
-              + std::to_string(frames[t].rows()) + " particles, frame "
-              + std::to_string(begin) + " has " + std::to_string(particles)
-            );
-        }
-    }
-    if (particles == 0)
-    {
-        throw std::invalid_argument("vectorAutocorrelation: frames hold no particles");
-    }
+    const Eigen::Index particles = detail::checkFrameRange(frames, begin, end, "vectorAutocorrelation");
     const std::size_t length = end - begin;
     detail::PaddedFft fft(length, maxLag);
     std::vector<double> spectrum;

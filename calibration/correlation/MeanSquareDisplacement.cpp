@@ -1,4 +1,5 @@
 #include "correlation/MeanSquareDisplacement.hpp"
+#include "correlation/detail/FrameRange.hpp"
 #include "correlation/detail/PaddedFft.hpp"
 
 #include <gsl/gsl_fit.h>
@@ -18,30 +19,7 @@ Eigen::MatrixX3d meanSquareDisplacement
     std::size_t end
 )
 {
-    if (begin >= end || end > frames.size())
-    {
-        throw std::invalid_argument
-        (
-            "meanSquareDisplacement: bad frame range [" + std::to_string(begin)
-          + ", " + std::to_string(end) + ") of " + std::to_string(frames.size())
-        );
-    }
-    const Eigen::Index particles = frames[begin].rows();
-    for (std::size_t t = begin; t < end; ++t)
-    {
-        if (frames[t].rows() != particles)
-        {
-            throw std::invalid_argument
-            (
-                "meanSquareDisplacement: frame " + std::to_string(t)
-              + " has a different particle count"
-            );
-        }
-    }
-    if (particles == 0)
-    {
-        throw std::invalid_argument("meanSquareDisplacement: frames hold no particles");
-    }
+    const Eigen::Index particles = detail::checkFrameRange(frames, begin, end, "meanSquareDisplacement");
     const std::size_t n = end - begin;
     detail::PaddedFft fft(n, maxLag);
     std::vector<double> spectrum;
