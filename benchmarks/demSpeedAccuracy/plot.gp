@@ -1,4 +1,5 @@
-# gnuplot -e "report='build/benchmarks/demSpeedAccuracy/report.txt'; out='docs/figures/demSpeedAccuracy.png'" benchmarks/demSpeedAccuracy/plot.gp
+# gnuplot -e "report='build/benchmarks/demSpeedAccuracy/results.txt'; out='docs/figures/demSpeedAccuracy.png'" benchmarks/demSpeedAccuracy/plot.gp
+# (called by ./run with its own results)
 # |error of D_fine vs the reference| against CPU time, one line per N (labels: strain)
 set terminal pngcairo size 900,600 noenhanced
 set output out

@@ -192,12 +192,8 @@ int main(int argc, char** argv)
         const std::string output = text(config, "output", "");
         if (!output.empty())
         {
-#ifdef SDF_DEM_HAVE_HDF5
             writeCellRun(result, output);
             std::cout << "written " << output << "\n";
-#else
-            throw std::runtime_error("output requested but built without HDF5 (sdf_io)");
-#endif
         }
     }
     catch (const std::exception& err)

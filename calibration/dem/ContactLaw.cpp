@@ -1,4 +1,5 @@
 #include "ContactLaw.hpp"
+#include "ContactModels.hpp"
 
 #include <algorithm>
 #include <limits>
@@ -225,6 +226,23 @@ double ContactLaw::contactDuration(double vImpact) const
         shortest = std::min(shortest, tc);
     }
     return shortest;
+}
+
+double ContactLaw::normalElasticEnergy(const PairCoefficients& c, double delta) const
+{
+    if (delta <= 0) return 0;
+    return withContactModel
+    (
+        model(), [&](auto law) { return decltype(law)::normalElasticEnergy(c, delta); }
+    );
+}
+
+double ContactLaw::tangentialStiffness(const PairCoefficients& c, double delta) const
+{
+    return withContactModel
+    (
+        model(), [&](auto law) { return decltype(law)::tangentialStiffness(c, delta); }
+    );
 }
 
 double ContactLaw::maximumTimeStep() const

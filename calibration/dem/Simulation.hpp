@@ -5,20 +5,34 @@
 // Lees-Edwards sheared) periodic box, with optional flat walls and a thermostat that
 // holds the granular temperature of a homogeneous cell.
 //
+// Where things are: the step and the state in Simulation.cpp; the force pass (pair loop,
+// one instantiation per contact law) in SimulationForces.cpp; the neighbour list, its
+// rebuilds, the spatial renumbering and the thread ranges in SimulationNeighbours.cpp;
+// temperatures, energies and stresses in SimulationMeasurements.cpp. The parts it is
+// built from: contact laws (ContactLaw, ContactModels, ContactForce), driving
+// (Driving: thermostat, Lees-Edwards), walls (Walls), renumbering (Renumbering), thread
+// balancing (BlockBalance), statistics (CellStatistics).
+//
 // Reproducibility: every particle sums the forces of its pairs in decreasing pair order
 // (the pair list is ordered (i, j)), whatever the threads and their particle ranges. No
 // floating-point atomics, so a run is bitwise reproducible for a given seed; the
 // trajectories do not even depend on the number of threads (computeForces explains how).
 
+#include "BlockBalance.hpp"
+#include "CellStatistics.hpp"
+#include "ContactForce.hpp"
 #include "ContactLaw.hpp"
+#include "Driving.hpp"
 #include "NeighbourList.hpp"
 #include "Particles.hpp"
 #include "PeriodicBox.hpp"
 #include "Species.hpp"
+#include "Walls.hpp"
 
 #include <array>
 #include <cstdint>
 #include <functional>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -27,22 +41,12 @@
 namespace sdf::dem
 {
 
-enum class CellMode
-{
-    nve,            // plain Newtonian dynamics (energy conserved if elastic and frictionless)
-    thermostatted,  // homogeneous cell held at a target granular temperature
-    leesEdwards     // simple shear at a prescribed rate, T is an output
-};
-
-CellMode cellModeFromName(const std::string& name);
-std::string cellModeName(CellMode mode);
-
 struct SimulationSettings
 {
     ContactSettings contact;
     double timeStep = 0;                   // dt [s]; 0: use 0.5 x the maximum
     double skin = -1;                      // Verlet skin [m]; < 0: 0.3 x smallest diameter
-    CellMode mode = CellMode::nve;
+    CellMode mode = CellMode::nve;          // built-in driving (Simulation::setDriving: another)
     double targetTemperature = 0;          // T = <|c|^2> (sum of 3 components) [m^2/s^2]
     double thermostatTime = 0;             // relaxation time tau_T [s]; 0: 50 dt
     double shearRate = 0;                  // gammaDot [1/s] for Lees-Edwards
@@ -57,48 +61,6 @@ struct SimulationSettings
     long renumberEvery = 0;
 };
 
-//- Flat frictional wall (infinitely heavy): point on the plane and unit normal into the domain.
-struct Wall
-{
-    Eigen::Vector3d point = Eigen::Vector3d::Zero();
-    Eigen::Vector3d normal = Eigen::Vector3d::UnitZ();
-};
-
-//- Per-species microscopic stress J (seed eqs 9-13, not divided by volume):
-//  kinetic[s] = sum_{i in s} m_i c_i c_i^T
-//  configurational[pair(s,t)] = sum_{contacts (i,j), species {s,t}} F_ij r_ij^T
-//  (entry (a,b) = F_a r_b; F_ij on i from j, r_ij = x_i - x_j; repulsion gives J_aa > 0)
-struct StressSplit
-{
-    int nSpecies = 0;
-    std::vector<Eigen::Matrix3d> kinetic;
-    std::vector<Eigen::Matrix3d> configurational;
-
-    //- J^s = kinetic[s] + configurational[(s,s)]
-    Eigen::Matrix3d speciesStress(int s) const;
-    //- J^{st}, s != t (configurational only)
-    Eigen::Matrix3d crossStress(int s, int t) const;
-    //- Sum of all parts (eq 13)
-    Eigen::Matrix3d sum() const;
-};
-
-//- Collision counts and impact-energy histograms per unordered species pair.
-//  Impact energy: 0.5 m* v_n^2 at the first step of a contact (normal, centre-of-mass frame).
-struct CollisionStatistics
-{
-    int nSpecies = 0;
-    std::vector<double> binEdges;            // nBins + 1 edges [J], log-spaced
-    std::vector<long> counts;                // per species pair
-    std::vector<std::vector<long>> histogram;// per species pair: nBins + 2 (under, bins, over)
-    std::vector<double> energySum;           // per species pair [J]
-    double elapsedTime = 0;                  // [s] time over which collisions were counted
-
-    void reset(int nSpecies, double eMin, double eMax, int nBins);
-    void clearCounts();
-    //- Collisions per unit time of one particle of species s with particles of species t.
-    double frequencyPerParticle(int s, int t, const std::vector<int>& speciesCounts) const;
-};
-
 //- Everything needed to continue a run bit for bit (walls and collision counts excluded).
 struct SimulationState
 {
@@ -110,26 +72,6 @@ struct SimulationState
     std::vector<ContactHistory> history;
     // per-pair force on i and n x F_t of the last evaluation (stress measurements)
     std::vector<double> pairForce, pairNCrossFt;   // 3 per pair
-};
-
-//- One phase's split of the work among threads: shares of a work model that follow the
-//  measured busy times (work per busy second) halfway at each update.
-struct BlockBalance
-{
-    std::vector<double> share;   // fraction of the work model per block
-    std::vector<double> work;    // work-model units per block at the last split
-    std::vector<double> busy;    // busy seconds per block since the last split
-    std::vector<double> totalBusy;   // busy seconds per block up to the last split
-    double totalWall = 0;            // wall-clock seconds of the phase since the start
-                                     // (force pass: up to the barrier and after it)
-    //- Busy seconds of block b since the start.
-    double busySeconds(int b) const { return totalBusy[b] + busy[b]; }
-
-    void reset(int nBlocks);
-    void update();
-    //- Contiguous particle ranges (begin of each block, then n) by share; particles cost 1.
-    //  Boundaries are multiples of align (but the last).
-    std::vector<int> splitParticles(int n, int align = 1);
 };
 
 class Simulation
@@ -158,6 +100,14 @@ public:
 
     void addWall(const Wall& wall);
 
+    //- Replaces the driving built from settings().mode by one of any type derived from
+    //  Driving (e.g. written outside the library), before the first step (also before
+    //  importState of a resumed run). Its shearRate() must be the cell's, box().shearRate:
+    //  the streaming profile is fixed when the Simulation is built (a sheared driving of
+    //  your own: build with mode leesEdwards at that rate). Throws std::invalid_argument
+    //  for a null driving, once the run has started, or for another shear rate.
+    void setDriving(std::unique_ptr<Driving> driving);
+
     //- State for checkpoints; importState continues bitwise as if never interrupted
     //  (the per-particle force sums do not depend on which non-touching pairs are listed).
     SimulationState exportState() const;
@@ -184,8 +134,7 @@ public:
     std::vector<int> speciesCounts() const;
     //- Current index of the particle with this id (Particles::id).
     int indexOfId(int id) const { return indexOfId_[id]; }
-    void setTargetTemperature(double T) { settings_.targetTemperature = T; }
-    void setMode(CellMode mode) { settings_.mode = mode; }
+    const Driving& driving() const { return *driving_; }
 
     // --- measurements
     //- Fluctuating velocity of particle i (minus streaming or mean velocity).
@@ -231,24 +180,44 @@ private:
     //  done that already in its drift loop); halfKick: finish the step with the second
     //  half kick v += dt/2 F/m (fused into the force pass, particle by particle)
     void computeForces(bool checkDisplacements = true, bool halfKick = false);
+    //- The force pass with contact law Law over the listed pairs (all blocks, threads),
+    //  with the torques finished and, if kickHere, the second half kick; returns the
+    //  largest overlap fraction.
+    template<class Law>
+    double pairForcePass(bool rebuildNear, bool kickHere, bool finishSums);
+    //- One block's pairs that touch (over the near list, or all its listed pairs when
+    //  rebuildNear); clears the pairs whose contact ended. Returns their number.
+    int findTouchingPairs(int block, bool rebuildNear);
+    //- One block's touching pairs through the contact law, from the last to the first.
+    template<class Law>
+    double evaluateTouchingPairs(int block, int nContacts);
+    //- Adds the lower blocks' cross contacts to the particles [begin, end).
+    void addCrossContacts(int begin, int end);
+    //- Torque from the sum of n x F_t and, if kick, the second half kick, for particles
+    //  [begin, end); finishSums: hands them on to the driving.
+    void finishParticles(int begin, int end, bool kick, bool finishSums);
+    //- Adds the blocks' impacts to the collision statistics, in pair order.
+    void gatherCollisions();
+    //- Throws the unstable-run error naming the worst pair.
+    [[noreturn]] void overlapFailure(double maxOverlap) const;
+    //- Velocity the temperatures and stresses are taken about (zero about the streaming).
+    Eigen::Vector3d referenceMeanVelocity() const;
     void rebuildNeighbourList();
-    //- Renumbers the particles in order of y (ties by id); returns the old -> new index map.
-    std::vector<int> renumberParticles();
     //- Rebuilds indexOfId_ from particles_.id; throws if the ids are not a permutation.
     void indexIds();
     //- Splits particles (and their pairs as first particle) into one contiguous block per
     //  thread for the force pass (see computeForces).
     void partitionWork();
     bool neighbourListExpired() const;
-    void applyThermostat();
     void checkEnergy() const;
 
     std::vector<Species> species_;
     SimulationSettings settings_;
     ContactLaw law_;
+    std::unique_ptr<Driving> driving_;
     Particles particles_;
     PeriodicBox box_;
-    std::vector<Wall> walls_;
+    Walls walls_;
 
     double dt_ = 0;
     double skin_ = 0;
@@ -292,7 +261,6 @@ private:
     // the barrier; a compact copy, so few cache lines cross between the cores)
     struct CrossContact { int j; double force[3]; double nCrossFt[3]; };
     std::vector<CacheLinePadded<std::vector<CrossContact>>> blockCross_;
-    std::vector<std::vector<ContactHistory>> wallHistory_;    // per wall, per particle
 
     // forces and torques of the previous evaluation (F^n) during a force pass, for the
     // synchronised velocity estimates v^{n+1/2} + dt/2 F^n/m (swapped with Particles::fx..tz)
@@ -303,13 +271,6 @@ private:
     RebuildTimings rebuildTimings_;
     double timeSinceBuild_ = 0;
     double radiusGrowthSinceBuild_ = 0;
-
-    // thermostat sums per chunk of thermostatChunk particles: mass, mass x velocity,
-    // velocity, |velocity|^2 (filled by the force pass's finish when it is thermostatted)
-    static constexpr int thermostatChunk = 64;
-    struct ThermostatSum { static constexpr int size = 8; double value[size]; };
-    std::vector<ThermostatSum> thermostatChunkSums_;
-    bool thermostatSumsReady_ = false;
 
     double lastMaxOverlapFraction_ = 0;
     double referenceEnergy_ = 0;

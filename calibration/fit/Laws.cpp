@@ -1,4 +1,5 @@
 #include "fit/Laws.hpp"
+#include "fit/LawFormulas.hpp"
 
 #include <Eigen/Dense>
 
@@ -11,11 +12,6 @@ namespace sdf::fit
 
 namespace
 {
-
-double perComponentTemperature(const Condition& c)
-{
-    return c.T / 3.0;
-}
 
 //- Weighted least squares of ln y on the columns that `regressors` writes
 //  for each row, over the rows with y > 0 (weights (y/sigma)^2: the inverse
@@ -63,15 +59,14 @@ Eigen::VectorXd logRegression
 
 double carnahanStarlingG0(double phi)
 {
-    const double oneMinus = 1.0 - phi;
-    return (1.0 - 0.5 * phi) / (oneMinus * oneMinus * oneMinus);
+    return formulas::carnahanStarlingG0(phi);
 }
 
 // ---------------------------------------------------------------- powerLaw
 
 double SeedPowerLaw::evaluate(const Condition& c, const Eigen::VectorXd& p) const
 {
-    return p(0) * std::pow(1.0 + c.x, p(1)) * std::pow(c.T, p(2)) * std::pow(c.phi, p(3));
+    return formulas::powerLaw(p(0), p(1), p(2), p(3), c.phi, c.x, c.T);
 }
 
 Eigen::VectorXd SeedPowerLaw::gradient(const Condition& c, const Eigen::VectorXd& p) const
@@ -113,13 +108,13 @@ namespace
 {
 double kineticShape(const Condition& c)
 {
-    return c.d * std::sqrt(perComponentTemperature(c)) / (c.phi * carnahanStarlingG0(c.phi));
+    return formulas::kineticShape(c.phi, c.T, c.d);
 }
 } // namespace
 
 double KineticTheoryGroupsLaw::evaluate(const Condition& c, const Eigen::VectorXd& p) const
 {
-    return p(0) * kineticShape(c) * (1.0 + p(1) * c.x);
+    return formulas::kineticTheoryGroups(p(0), p(1), c.phi, c.x, c.T, c.d);
 }
 
 Eigen::VectorXd KineticTheoryGroupsLaw::gradient
@@ -154,14 +149,14 @@ Eigen::VectorXd KineticTheoryGroupsLaw::initialParameters
 
 double SievingLawBase::kineticScale(const Condition& c) const
 {
-    return std::pow(c.d, diameterPower) * std::sqrt(perComponentTemperature(c));
+    return formulas::sievingScale(diameterPower, c.T, c.d);
 }
 
 // --------------------------------------------------------- sievingPowerLaw
 
 double SievingPowerLaw::evaluate(const Condition& c, const Eigen::VectorXd& p) const
 {
-    return p(0) * kineticScale(c) * std::pow(c.phi, p(1)) * (1.0 + p(2) * c.x);
+    return formulas::sievingPowerLaw(p(0), diameterPower, p(1), p(2), c.phi, c.x, c.T, c.d);
 }
 
 Eigen::VectorXd SievingPowerLaw::gradient(const Condition& c, const Eigen::VectorXd& p) const
@@ -202,7 +197,7 @@ Eigen::VectorXd SievingPowerLaw::initialParameters(const std::vector<Observation
 
 double SievingCompositionPowerLaw::evaluate(const Condition& c, const Eigen::VectorXd& p) const
 {
-    return p(0) * kineticScale(c) * std::pow(c.phi, p(1)) * std::pow(c.x, p(2));
+    return formulas::sievingCompositionPowerLaw(p(0), diameterPower, p(1), p(2), c.phi, c.x, c.T, c.d);
 }
 
 Eigen::VectorXd SievingCompositionPowerLaw::gradient
@@ -241,6 +236,43 @@ Eigen::VectorXd SievingCompositionPowerLaw::initialParameters
         start << 1.0, 0.0, 1.0;
     }
     return start;
+}
+
+// ----------------------------------------------------------- by name
+
+const std::vector<std::string>& lawNames()
+{
+    static const std::vector<std::string> names
+    {
+        "kineticTheoryGroups", "powerLaw", "sievingCompositionPowerLaw", "sievingPowerLaw"
+    };
+    return names;
+}
+
+ConstitutiveLaw lawFromName(const std::string& name, int diameterPower)
+{
+    if (name == "powerLaw")
+    {
+        return SeedPowerLaw{};
+    }
+    if (name == "kineticTheoryGroups")
+    {
+        return KineticTheoryGroupsLaw{};
+    }
+    if (name == "sievingPowerLaw")
+    {
+        return SievingPowerLaw(diameterPower);
+    }
+    if (name == "sievingCompositionPowerLaw")
+    {
+        return SievingCompositionPowerLaw(diameterPower);
+    }
+    std::string valid;
+    for (const std::string& n : lawNames())
+    {
+        valid += (valid.empty() ? "" : " ") + n;
+    }
+    throw std::invalid_argument("unknown law '" + name + "'; valid laws: (" + valid + ")");
 }
 
 } // namespace sdf::fit

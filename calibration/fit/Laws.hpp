@@ -5,6 +5,7 @@
 #ifndef sdf_fit_Laws_hpp
 #define sdf_fit_Laws_hpp
 
+#include "fit/ConstitutiveLaw.hpp"
 #include "fit/FitData.hpp"
 
 #include <Eigen/Core>
@@ -127,6 +128,15 @@ struct SievingCompositionPowerLaw : SievingLawBase
     //- Weighted regression of ln(y/(d^k sqrt(T1))) on (1, ln phi, ln x).
     Eigen::VectorXd initialParameters(const std::vector<Observation>& data) const;
 };
+
+//- The law whose dictionary name (`law` entry) is `name`: powerLaw,
+//  kineticTheoryGroups, sievingPowerLaw or sievingCompositionPowerLaw;
+//  diameterPower is the fixed k of the sieving laws (ignored by the others).
+//  Throws std::invalid_argument naming the law and the valid names.
+ConstitutiveLaw lawFromName(const std::string& name, int diameterPower = 1);
+
+//- The names lawFromName knows, sorted
+const std::vector<std::string>& lawNames();
 
 } // namespace sdf::fit
 

@@ -63,7 +63,6 @@ TEST(CellRun, DiluteGasPipelineAndHdf5)
     const double omegaE = 4*n*sigma*sigma*g0*std::sqrt(M_PI*T1);
     EXPECT_NEAR(r.collisions.frequencyPerParticle(0, 0, r.speciesCounts)/omegaE, 1.0, 0.05);
 
-#ifdef SDF_DEM_HAVE_HDF5
     const std::string path = "cell_run_test.h5";
     std::remove(path.c_str());
     writeCellRun(r, path);
@@ -77,7 +76,6 @@ TEST(CellRun, DiluteGasPipelineAndHdf5)
     EXPECT_EQ(gk.readVector("correlation").size(), st.greenKubo.meanCorrelation.size());
     EXPECT_EQ(root.openGroup("results").openGroup("collisions").readInt64Vector("counts")[0],
               r.collisions.counts[0]);
-#endif
 }
 
 TEST(CellRun, BadSettingsNameTheEntry)

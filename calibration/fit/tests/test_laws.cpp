@@ -1,6 +1,7 @@
 // The laws themselves: the seed's numbers, the Chapman-Enskog limit, and
 // analytic gradients against central finite differences.
 #include "fit/ConstitutiveLaw.hpp"
+#include "fit/LawFormulas.hpp"
 #include "fit/Laws.hpp"
 
 #include <gtest/gtest.h>
@@ -104,4 +105,55 @@ TEST(Laws, TypeErasedLawKeepsNamesAndCopies)
     EXPECT_EQ(copy.parameterNames()[3], "b");
     EXPECT_EQ(ConstitutiveLaw(KineticTheoryGroupsLaw{}).name(), "kineticTheoryGroups");
     EXPECT_EQ(ConstitutiveLaw(SievingPowerLaw{}).name(), "sievingPowerLaw");
+}
+
+TEST(Laws, LawFromNameBuildsEveryLawAndRefusesOthers)
+{
+    for (const std::string& name : lawNames())
+    {
+        EXPECT_EQ(lawFromName(name, 2).name(), name);
+    }
+    Eigen::VectorXd p(3);
+    p << 0.7, -1.2, 3.3;
+    const Condition c{0.4, 0.2, 0.3, 3e-3, std::nullopt};
+    EXPECT_EQ(lawFromName("sievingPowerLaw", 2).evaluate(c, p), SievingPowerLaw{2}.evaluate(c, p));
+    try
+    {
+        lawFromName("magic");
+        ADD_FAILURE() << "an unknown law was built";
+    }
+    catch (const std::invalid_argument& e)
+    {
+        const std::string what = e.what();
+        EXPECT_NE(what.find("magic"), std::string::npos) << what;
+        EXPECT_NE(what.find("kineticTheoryGroups"), std::string::npos) << what;
+    }
+}
+
+TEST(Laws, FormulasAreTheLawsEvaluations)
+{
+    // The header-only formulas (used by the solver's models) and the fitted
+    // laws are one definition: bitwise equal
+    const Condition c{0.45, 0.3, 0.02, 2e-3, std::nullopt};
+    Eigen::VectorXd seed(4), kinetic(2), sieving(3);
+    seed << 6.0, 1.0, 1.0, -1.5;
+    kinetic << 0.12, 0.4;
+    sieving << 0.8, -0.7, 0.3;
+    EXPECT_EQ(SeedPowerLaw{}.evaluate(c, seed), formulas::powerLaw(6, 1, 1, -1.5, c.phi, c.x, c.T));
+    EXPECT_EQ
+    (
+        KineticTheoryGroupsLaw{}.evaluate(c, kinetic),
+        formulas::kineticTheoryGroups(0.12, 0.4, c.phi, c.x, c.T, c.d)
+    );
+    EXPECT_EQ
+    (
+        SievingPowerLaw{1}.evaluate(c, sieving),
+        formulas::sievingPowerLaw(0.8, 1, -0.7, 0.3, c.phi, c.x, c.T, c.d)
+    );
+    EXPECT_EQ
+    (
+        SievingCompositionPowerLaw{2}.evaluate(c, sieving),
+        formulas::sievingCompositionPowerLaw(0.8, 2, -0.7, 0.3, c.phi, c.x, c.T, c.d)
+    );
+    EXPECT_EQ(carnahanStarlingG0(c.phi), formulas::carnahanStarlingG0(c.phi));
 }

@@ -1,0 +1,184 @@
+// Measurements of a Simulation's state: velocities about the driving's reference,
+// temperatures, energies, momentum and the microscopic stress (total and per species).
+
+#include "Simulation.hpp"
+
+#include <cmath>
+
+namespace sdf::dem
+{
+
+Eigen::Vector3d Simulation::meanVelocity() const
+{
+    const Particles& p = particles_;
+    Eigen::Vector3d momentum = Eigen::Vector3d::Zero();
+    double mass = 0;
+    for (std::size_t i = 0; i < p.size(); ++i)
+    {
+        momentum += p.mass[i]*Eigen::Vector3d(p.vx[i], p.vy[i], p.vz[i]);
+        mass += p.mass[i];
+    }
+    return mass > 0 ? Eigen::Vector3d(momentum/mass) : Eigen::Vector3d::Zero();
+}
+
+Eigen::Vector3d Simulation::referenceMeanVelocity() const
+{
+    return driving_->aboutStreamingVelocity() ? Eigen::Vector3d::Zero() : meanVelocity();
+}
+
+Eigen::Vector3d Simulation::fluctuatingVelocity(int i) const
+{
+    const Particles& p = particles_;
+    Eigen::Vector3d c(p.vx[i], p.vy[i], p.vz[i]);
+    if (driving_->aboutStreamingVelocity())
+    {
+        c.x() -= box_.streamingVelocity(p.y[i]);
+    }
+    return c;
+}
+
+std::vector<double> Simulation::speciesTemperatures() const
+{
+    const int nSpecies = int(species_.size());
+    std::vector<double> sum(nSpecies, 0.0);
+    std::vector<int> count(nSpecies, 0);
+    const Eigen::Vector3d mean = referenceMeanVelocity();
+    for (std::size_t i = 0; i < particles_.size(); ++i)
+    {
+        const int s = particles_.species[i];
+        sum[s] += (fluctuatingVelocity(int(i)) - mean).squaredNorm();
+        ++count[s];
+    }
+    for (int s = 0; s < nSpecies; ++s) sum[s] = count[s] ? sum[s]/count[s] : 0.0;
+    return sum;
+}
+
+double Simulation::temperature() const
+{
+    const Eigen::Vector3d mean = referenceMeanVelocity();
+    double sum = 0;
+    for (std::size_t i = 0; i < particles_.size(); ++i)
+    {
+        sum += (fluctuatingVelocity(int(i)) - mean).squaredNorm();
+    }
+    return particles_.size() ? sum/particles_.size() : 0.0;
+}
+
+double Simulation::translationalKineticEnergy() const
+{
+    const Particles& p = particles_;
+    double e = 0;
+    for (std::size_t i = 0; i < p.size(); ++i)
+    {
+        e += 0.5*p.mass[i]*(p.vx[i]*p.vx[i] + p.vy[i]*p.vy[i] + p.vz[i]*p.vz[i]);
+    }
+    return e;
+}
+
+double Simulation::rotationalKineticEnergy() const
+{
+    const Particles& p = particles_;
+    double e = 0;
+    for (std::size_t i = 0; i < p.size(); ++i)
+    {
+        e += 0.5*p.inertia[i]*(p.wx[i]*p.wx[i] + p.wy[i]*p.wy[i] + p.wz[i]*p.wz[i]);
+    }
+    return e;
+}
+
+double Simulation::elasticEnergy() const
+{
+    const Particles& p = particles_;
+    double e = 0;
+    const std::vector<int>& f = list_.first();
+    const std::vector<int>& s = list_.second();
+    for (std::size_t k = 0; k < list_.size(); ++k)
+    {
+        if (!history_[k].touching) continue;
+        const int i = f[k], j = s[k];
+        double dx = p.x[i] - p.x[j], dy = p.y[i] - p.y[j], dz = p.z[i] - p.z[j], dvx = 0;
+        box_.minimumImage(dx, dy, dz, dvx);
+        const double delta = p.radius[i] + p.radius[j] - std::sqrt(dx*dx + dy*dy + dz*dz);
+        const PairCoefficients& c = law_.pair(p.species[i], p.species[j]);
+        e += law_.normalElasticEnergy(c, delta);
+        const double ft2 = history_[k].ft[0]*history_[k].ft[0]
+            + history_[k].ft[1]*history_[k].ft[1] + history_[k].ft[2]*history_[k].ft[2];
+        if (ft2 > 0 && delta > 0)
+        {
+            e += 0.5*ft2/law_.tangentialStiffness(c, delta);
+        }
+    }
+    walls_.addElasticEnergy(p, law_, e);
+    return e;
+}
+
+Eigen::Vector3d Simulation::totalMomentum() const
+{
+    const Particles& p = particles_;
+    Eigen::Vector3d m = Eigen::Vector3d::Zero();
+    for (std::size_t i = 0; i < p.size(); ++i)
+    {
+        m += p.mass[i]*Eigen::Vector3d(p.vx[i], p.vy[i], p.vz[i]);
+    }
+    return m;
+}
+
+StressSplit Simulation::stressSplit() const
+{
+    const Particles& p = particles_;
+    const int nSpecies = int(species_.size());
+    StressSplit J;
+    J.nSpecies = nSpecies;
+    J.kinetic.assign(nSpecies, Eigen::Matrix3d::Zero());
+    J.configurational.assign(numberOfSpeciesPairs(nSpecies), Eigen::Matrix3d::Zero());
+    const Eigen::Vector3d mean = referenceMeanVelocity();
+    for (std::size_t i = 0; i < p.size(); ++i)
+    {
+        const Eigen::Vector3d c = fluctuatingVelocity(int(i)) - mean;
+        J.kinetic[p.species[i]] += p.mass[i]*c*c.transpose();
+    }
+    const std::vector<int>& f = list_.first();
+    const std::vector<int>& s = list_.second();
+    for (std::size_t k = 0; k < list_.size(); ++k)
+    {
+        if (!history_[k].touching) continue;
+        const int i = f[k], j = s[k];
+        double dx = p.x[i] - p.x[j], dy = p.y[i] - p.y[j], dz = p.z[i] - p.z[j], dvx = 0;
+        box_.minimumImage(dx, dy, dz, dvx);
+        const Eigen::Vector3d F(pfx_[k], pfy_[k], pfz_[k]);
+        const Eigen::Vector3d r(dx, dy, dz);
+        J.configurational[speciesPairIndex(p.species[i], p.species[j], nSpecies)] += F*r.transpose();
+    }
+    return J;
+}
+
+Eigen::Matrix3d Simulation::totalStress() const
+{
+    const Particles& p = particles_;
+    Eigen::Matrix3d J = Eigen::Matrix3d::Zero();
+    const Eigen::Vector3d mean = referenceMeanVelocity();
+    for (std::size_t i = 0; i < p.size(); ++i)
+    {
+        const Eigen::Vector3d c = fluctuatingVelocity(int(i)) - mean;
+        J += p.mass[i]*c*c.transpose();
+    }
+    const std::vector<int>& f = list_.first();
+    const std::vector<int>& s = list_.second();
+    for (std::size_t k = 0; k < list_.size(); ++k)
+    {
+        if (!history_[k].touching) continue;
+        const int i = f[k], j = s[k];
+        double dx = p.x[i] - p.x[j], dy = p.y[i] - p.y[j], dz = p.z[i] - p.z[j], dvx = 0;
+        box_.minimumImage(dx, dy, dz, dvx);
+        J += Eigen::Vector3d(pfx_[k], pfy_[k], pfz_[k])*Eigen::Vector3d(dx, dy, dz).transpose();
+    }
+    return J;
+}
+
+void Simulation::enableCollisionStatistics(double eMin, double eMax, int nBins)
+{
+    collisions_.reset(int(species_.size()), eMin, eMax, nBins);
+    collisionsEnabled_ = true;
+}
+
+} // namespace sdf::dem

@@ -1,0 +1,80 @@
+// The constitutive laws of the transport coefficients as plain formulas:
+// inline functions of doubles, no Eigen, no library to link, so that the fit
+// library (Laws.cpp), the calibrated models and the solver's plain diffusivity
+// models (powerLaw, kineticTheory) evaluate one definition of each law.
+//
+// Conventions (docs/developer/equations.md): T is the granular temperature as
+// the SUM of the three components' mean square fluctuation velocity [m2/s2];
+// laws from kinetic theory use the per-component T1 = T/3. x is the coarse
+// fraction of the solids, phi the total solids fraction, d the diameter [m] of
+// the species the value is for.
+#ifndef sdf_fit_LawFormulas_hpp
+#define sdf_fit_LawFormulas_hpp
+
+#include <cmath>
+
+namespace sdf::fit::formulas
+{
+
+//- Per-component granular temperature T1 = T/3 of kinetic theory
+inline double perComponentTemperature(double T)
+{
+    return T/3.0;
+}
+
+//- Carnahan-Starling radial distribution at contact, g0 = (1 - phi/2)/(1 - phi)^3
+inline double carnahanStarlingG0(double phi)
+{
+    const double oneMinus = 1.0 - phi;
+    return (1.0 - 0.5*phi)/(oneMinus*oneMinus*oneMinus);
+}
+
+//- The seed's eq 15 generalised: D = A (1 + x)^a T^m phi^b
+inline double powerLaw(double A, double a, double m, double b, double phi, double x, double T)
+{
+    return A*std::pow(1.0 + x, a)*std::pow(T, m)*std::pow(phi, b);
+}
+
+//- The kinetic-theory shape d sqrt(T1)/(phi g0(phi))
+inline double kineticShape(double phi, double T, double d)
+{
+    return d*std::sqrt(perComponentTemperature(T))/(phi*carnahanStarlingG0(phi));
+}
+
+//- Kinetic theory in dimensionless groups: D = C d sqrt(T1) (1 + alpha x)/(phi g0)
+//  (Savage & Dai's elastic-sphere diffusivity is C = sqrt(pi)/(8 (1 + e)),
+//  alpha = 0)
+inline double kineticTheoryGroups(double C, double alpha, double phi, double x, double T, double d)
+{
+    return C*kineticShape(phi, T, d)*(1.0 + alpha*x);
+}
+
+//- The kinetic scale of the sieving laws, d^k sqrt(T1)
+inline double sievingScale(double diameterPower, double T, double d)
+{
+    return std::pow(d, diameterPower)*std::sqrt(perComponentTemperature(T));
+}
+
+//- eta = E d^k sqrt(T1) phi^p (1 + beta x)
+inline double sievingPowerLaw
+(
+    double E, double diameterPower, double p, double beta,
+    double phi, double x, double T, double d
+)
+{
+    return E*sievingScale(diameterPower, T, d)*std::pow(phi, p)*(1.0 + beta*x);
+}
+
+//- eta = E d^k sqrt(T1) phi^p x^q
+inline double sievingCompositionPowerLaw
+(
+    double E, double diameterPower, double p, double q,
+    double phi, double x, double T, double d
+)
+{
+    return E*sievingScale(diameterPower, T, d)*std::pow(phi, p)*std::pow(x, q);
+}
+
+} // namespace sdf::fit::formulas
+
+#endif

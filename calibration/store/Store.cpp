@@ -1,0 +1,321 @@
+#include "store/Store.hpp"
+
+#include "io/Hdf5File.hpp"
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+namespace sdf::store
+{
+
+namespace
+{
+
+//- %.6g: the precision of the condition names
+std::string fmt6(double v)
+{
+    char buf[64];
+    std::snprintf(buf, sizeof(buf), "%.6g", v);
+    return buf;
+}
+
+//- %.10g: the precision of the settings fingerprint
+std::string fmt10(double v)
+{
+    char buf[64];
+    std::snprintf(buf, sizeof(buf), "%.10g", v);
+    return buf;
+}
+
+std::optional<double> optionalDouble(const io::Group& g, const std::string& name)
+{
+    if (!g.hasAttribute(name))
+    {
+        return std::nullopt;
+    }
+    return g.readDouble(name);
+}
+
+SpeciesRecord readSpecies(const io::Group& g)
+{
+    SpeciesRecord s;
+    s.D = g.readDouble("D");
+    s.DError = optionalDouble(g, "DError");
+    s.eta = optionalDouble(g, "eta");
+    s.etaError = optionalDouble(g, "etaError");
+    return s;
+}
+
+} // namespace
+
+
+StoreError::StoreError(const std::string& file, const std::string& message)
+:
+    std::runtime_error("calibration store " + file + ": " + message),
+    file_(file),
+    message_(message)
+{}
+
+
+SettingsMismatch::SettingsMismatch
+(
+    const std::string& file,
+    const std::string& condition,
+    const std::string& storedKey,
+    const std::string& currentKey
+)
+:
+    StoreError
+    (
+        file,
+        "condition " + condition + " was run with other DEM settings:\n    stored:  "
+      + storedKey + "\n    current: " + currentKey
+    ),
+    storedKey_(storedKey),
+    currentKey_(currentKey)
+{}
+
+
+bool isStored
+(
+    const std::string& path,
+    const std::map<std::string, std::string>& stored,
+    const std::string& name,
+    const std::string& key
+)
+{
+    const auto it = stored.find(name);
+    if (it == stored.end())
+    {
+        return false;
+    }
+    if (it->second != key)
+    {
+        throw SettingsMismatch(path, name, it->second, key);
+    }
+    return true;
+}
+
+
+void checkIsStore(const io::Group& root)
+{
+    if
+    (
+        !root.hasAttribute("content")
+     || root.attributeType("content") != io::AttributeType::string
+     || root.readString("content") != contentName
+    )
+    {
+        throw std::runtime_error
+        (
+            "it is a segregationDegradationFoam HDF5 file, but not a"
+            " calibration store (root attribute content = \""
+          + std::string(contentName) + "\" missing)"
+        );
+    }
+}
+
+
+std::string conditionName(double phi, double x, double T, std::int64_t seed)
+{
+    return
+        "phi" + fmt6(phi) + "_x" + fmt6(x) + "_T" + fmt6(T)
+      + "_seed" + std::to_string(seed);
+}
+
+
+std::string settingsKey(const dem::CellRunSettings& b, const std::string& contactModel)
+{
+    const dem::SimulationSettings& sim = b.simulation;
+    const dem::ContactSettings& c = sim.contact;
+    std::ostringstream key;
+    key << "species";
+    for (const auto& sp : b.species)
+    {
+        key << " " << sp.name << ":" << fmt10(sp.diameter) << ":" << fmt10(sp.density);
+    }
+    key << "; particles " << b.particles
+        << "; contact " << contactModel
+        << " e " << fmt10(c.restitution) << " mu " << fmt10(c.friction)
+        << " kn " << fmt10(c.normalStiffness)
+        << " kt/kn " << fmt10(c.tangentialStiffnessRatio)
+        << " gt/gn " << fmt10(c.tangentialDampingRatio)
+        << " E " << fmt10(c.youngsModulus) << " nu " << fmt10(c.poissonRatio)
+        << "; timeStep " << fmt10(sim.timeStep)
+        << "; thermostatTime " << fmt10(sim.thermostatTime)
+        << "; equilibrationTime " << fmt10(b.equilibrationTime)
+        << "; maxEquilibrationTime " << fmt10(b.maxEquilibrationTime)
+        << "; samplingTime " << fmt10(b.samplingTime)
+        << "; sampleEvery " << b.sampleEvery << "; blocks " << b.blocks;
+    return key.str();
+}
+
+
+void appendCondition
+(
+    const std::string& path,
+    const std::string& fineSpecies,
+    const std::string& coarseSpecies,
+    const std::string& key,
+    const ConditionInputs& cond,
+    const dem::CellRunResult& r
+)
+{
+    try
+    {
+        const bool exists = std::filesystem::is_regular_file(path);
+        io::AtomicFile out = exists ? io::AtomicFile::update(path) : io::AtomicFile::create(path);
+        const io::Group root = out.root();
+        if (exists)
+        {
+            checkIsStore(root);
+        }
+        else
+        {
+            root.setAttribute("content", contentName);
+            root.setAttribute("fineSpecies", fineSpecies);
+            root.setAttribute("coarseSpecies", coarseSpecies);
+        }
+        const io::Group g = root.createGroup("conditions/" + cond.name);
+        // inputs
+        g.setAttribute("phi", cond.phi);
+        g.setAttribute("x", cond.x);
+        g.setAttribute("targetT", cond.targetT);
+        g.setAttribute("seed", cond.seed);
+        g.setAttribute("particles", std::int64_t(r.settings.particles));
+        g.setAttribute("settingsKey", key);
+        // results
+        g.setAttribute("T", r.temperature);
+        g.setAttribute("TError", r.temperatureError);
+        g.setAttribute("equilibrated", std::int64_t(r.equilibrated ? 1 : 0));
+        g.setAttribute("equilibrationTime", r.equilibrationTime);
+        g.setAttribute("timeStep", r.timeStep);
+        g.setAttribute("boxLength", r.boxLength);
+        g.setAttribute("steps", std::int64_t(r.steps));
+        for (std::size_t i = 0; i < r.species.size(); ++i)
+        {
+            const dem::SpeciesTransport& st = r.species[i];
+            const io::Group sg = g.createGroup("species/" + st.name);
+            sg.setAttribute("role", i == 0 ? "fine" : "coarse");
+            sg.setAttribute("d", r.settings.species[i].diameter);
+            sg.setAttribute("count", std::int64_t(st.count));
+            sg.setAttribute("T", st.temperature);
+            sg.setAttribute("D", st.greenKubo.integral.value);
+            sg.setAttribute("DError", st.greenKubo.integral.standardError);
+            sg.setAttribute("DPlateauFound", std::int64_t(st.greenKubo.plateauFound ? 1 : 0));
+            sg.setAttribute("DMsd", st.diffusivityMsd.value);
+            sg.setAttribute("DMsdError", st.diffusivityMsd.standardError);
+            if (i < r.kineticSieving.size())
+            {
+                sg.setAttribute("eta", r.kineticSieving[i].value);
+                sg.setAttribute("etaError", r.kineticSieving[i].standardError);
+            }
+        }
+        // timings: the only attributes that differ between identical runs
+        const io::Group t = g.createGroup("timing");
+        t.setAttribute("wallSeconds", r.wallSeconds);
+        t.setAttribute("cpuSeconds", r.cpuSeconds);
+        t.setAttribute("particleStepsPerSecond", r.particleStepsPerSecond);
+        out.commit();
+    }
+    catch (const StoreError&)
+    {
+        throw;
+    }
+    catch (const std::exception& err)
+    {
+        throw StoreError(path, "adding condition " + cond.name + " failed: " + err.what());
+    }
+}
+
+
+std::map<std::string, std::string> storedSettingsKeys(const std::string& path)
+{
+    std::map<std::string, std::string> stored;
+    if (!std::filesystem::is_regular_file(path))
+    {
+        return stored;
+    }
+    try
+    {
+        const io::File f = io::File::openReadOnly(path);
+        const io::Group root = f.root();
+        checkIsStore(root);
+        if (root.hasGroup("conditions"))
+        {
+            const io::Group conditions = root.openGroup("conditions");
+            for (const std::string& name : conditions.childNames())
+            {
+                stored[name] = conditions.openGroup(name).readString("settingsKey");
+            }
+        }
+    }
+    catch (const std::exception& err)
+    {
+        throw StoreError(path, err.what());
+    }
+    return stored;
+}
+
+
+StoreContents readStore(const std::string& path)
+{
+    StoreContents contents;
+    try
+    {
+        const io::File f = io::File::openReadOnly(path);
+        const io::Group root = f.root();
+        checkIsStore(root);
+        contents.fineSpecies = root.readString("fineSpecies");
+        contents.coarseSpecies = root.readString("coarseSpecies");
+        if (!root.hasGroup("conditions"))
+        {
+            return contents;
+        }
+        const io::Group conditions = root.openGroup("conditions");
+        for (const std::string& name : conditions.childNames())
+        {
+            const io::Group g = conditions.openGroup(name);
+            ConditionRecord c;
+            c.name = name;
+            c.phi = g.readDouble("phi");
+            c.x = g.readDouble("x");
+            c.targetT = g.readDouble("targetT");
+            c.T = g.readDouble("T");
+            c.fine = readSpecies(g.openGroup("species/" + contents.fineSpecies));
+            const std::string coarse = "species/" + contents.coarseSpecies;
+            if (g.hasGroup(coarse))
+            {
+                c.coarse = readSpecies(g.openGroup(coarse));
+            }
+            contents.conditions.push_back(c);
+        }
+    }
+    catch (const std::exception& err)
+    {
+        throw StoreError(path, err.what());
+    }
+    return contents;
+}
+
+
+void writeTextAtomically(const std::string& path, const std::string& text)
+{
+    const std::string tmp = path + ".tmp";
+    {
+        std::ofstream os(tmp);
+        os << text;
+        if (!os.good())
+        {
+            throw StoreError(path, "cannot write " + tmp);
+        }
+    }
+    if (std::rename(tmp.c_str(), path.c_str()) != 0)
+    {
+        throw StoreError(path, "cannot rename " + tmp + " to " + path);
+    }
+}
+
+} // namespace sdf::store

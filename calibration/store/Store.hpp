@@ -1,0 +1,170 @@
+// The calibration store constant/calibration.h5: one group per finished DEM
+// condition, written by calibrateGranularMixture and by the calibrated
+// models' runDEM policy, read by both and by the tabulated models. One
+// definition of the layout, so that each writer recognises the other's
+// conditions:
+//
+//   /                        attributes format, formatVersion (sdf::io),
+//                            content = contentName, fineSpecies, coarseSpecies
+//   /conditions/<name>       one group per condition, <name> = conditionName()
+//                            attributes phi x targetT seed particles settingsKey
+//                            (inputs), T TError equilibrated equilibrationTime
+//                            timeStep boxLength steps (results)
+//   /conditions/<name>/species/<species>
+//                            role (fine | coarse), d, count, T, D, DError,
+//                            DPlateauFound, DMsd, DMsdError, eta, etaError
+//   /conditions/<name>/timing
+//                            wallSeconds cpuSeconds particleStepsPerSecond (the
+//                            only values that differ between identical runs)
+//
+// Every write is atomic (sdf::io::AtomicFile: a copy is written and renamed
+// over the store), so a killed run leaves every condition it finished.
+// Failures throw StoreError naming the file.
+#ifndef sdf_store_Store_hpp
+#define sdf_store_Store_hpp
+
+#include "CellRun.hpp"
+
+#include <cstdint>
+#include <map>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace sdf::io
+{
+class Group;
+}
+
+namespace sdf::store
+{
+
+//- Root attribute `content` of a calibration store.
+inline constexpr const char* contentName = "calibrateGranularMixture conditions";
+
+//- A failure to use a file as a calibration store; what() names the file.
+class StoreError : public std::runtime_error
+{
+public:
+    StoreError(const std::string& file, const std::string& message);
+
+    const std::string& file() const { return file_; }
+    //- What went wrong, without the file name
+    const std::string& message() const { return message_; }
+
+private:
+    std::string file_;
+    std::string message_;
+};
+
+//- A condition stored with DEM settings other than the current ones.
+class SettingsMismatch : public StoreError
+{
+public:
+    SettingsMismatch
+    (
+        const std::string& file,
+        const std::string& condition,
+        const std::string& storedKey,
+        const std::string& currentKey
+    );
+
+    const std::string& storedKey() const { return storedKey_; }
+    const std::string& currentKey() const { return currentKey_; }
+
+private:
+    std::string storedKey_;
+    std::string currentKey_;
+};
+
+//- Throws std::runtime_error unless root is the root group of a calibration
+//  store (a file of ours with another content, e.g. a periodicDEM result, is
+//  refused).
+void checkIsStore(const io::Group& root);
+
+//- Group name of a condition, e.g. phi0.3_x0.4_T0.01_seed1 (%.6g values).
+std::string conditionName(double phi, double x, double T, std::int64_t seed);
+
+//- Fingerprint of the DEM settings (everything but the condition): a stored
+//  condition is reused only if it was run with the same settings.
+std::string settingsKey(const dem::CellRunSettings& settings, const std::string& contactModel);
+
+//- What identifies one condition of the envelope.
+struct ConditionInputs
+{
+    std::string name;
+    double phi = 0;
+    double x = 0;
+    double targetT = 0;
+    std::int64_t seed = 0;
+};
+
+//- Appends one finished condition to the store at path, atomically; a new
+//  store gets the root attributes (content and the species names).
+void appendCondition
+(
+    const std::string& path,
+    const std::string& fineSpecies,
+    const std::string& coarseSpecies,
+    const std::string& settingsKey,
+    const ConditionInputs& inputs,
+    const dem::CellRunResult& result
+);
+
+//- Settings keys of the conditions in the store, by condition name; empty if
+//  there is no file. Throws StoreError if the file is not a calibration store
+//  of ours (corrupt, truncated, foreign); the file is left untouched.
+std::map<std::string, std::string> storedSettingsKeys(const std::string& path);
+
+//- Whether condition `name` is among `stored` (storedSettingsKeys of the
+//  store at path); throws SettingsMismatch if it was run with settings other
+//  than `key`: a stored condition is reused only with the same settings.
+bool isStored
+(
+    const std::string& path,
+    const std::map<std::string, std::string>& stored,
+    const std::string& name,
+    const std::string& key
+);
+
+//- What the fits and the tables read back of a species of a condition.
+struct SpeciesRecord
+{
+    double D = 0;
+    std::optional<double> DError;
+    std::optional<double> eta;        // engine units (kg^2 m s^-3)
+    std::optional<double> etaError;
+};
+
+//- What the fits and the tables read back of one condition.
+struct ConditionRecord
+{
+    std::string name;
+    double phi = 0;
+    double x = 0;
+    double targetT = 0;
+    double T = 0;                     // measured
+    SpeciesRecord fine;
+    SpeciesRecord coarse;
+};
+
+struct StoreContents
+{
+    std::string fineSpecies;
+    std::string coarseSpecies;
+    std::vector<ConditionRecord> conditions;   // sorted by name
+};
+
+//- Reads the whole store. Throws StoreError (file named) if it is missing,
+//  not a calibration store, or a condition lacks phi, x, targetT, T or the
+//  fine species' D.
+StoreContents readStore(const std::string& path);
+
+//- Writes a text file atomically (to <path>.tmp, renamed over path); throws
+//  StoreError on failure.
+void writeTextAtomically(const std::string& path, const std::string& text);
+
+} // namespace sdf::store
+
+#endif

@@ -1,0 +1,52 @@
+// Test helper: a finished DEM condition as the engine returns it (values
+// chosen, no run), so that the store's layout can be written and read back.
+#ifndef sdf_store_tests_StoreTestData_hpp
+#define sdf_store_tests_StoreTestData_hpp
+
+#include "store/Store.hpp"
+
+#include <string>
+
+namespace sdf::store::test
+{
+
+inline dem::CellRunResult syntheticResult(double scale = 1)
+{
+    dem::CellRunResult r;
+    r.settings.species = {{"small", 1e-3, 2500}, {"large", 2e-3, 2500}};
+    r.settings.particles = 200;
+    r.temperature = 0.01*scale;
+    r.temperatureError = 1e-4*scale;
+    r.equilibrated = true;
+    r.equilibrationTime = 0.002;
+    r.timeStep = 1e-6;
+    r.boxLength = 0.0123;
+    r.steps = 12345;
+    for (const auto& sp : r.settings.species)
+    {
+        dem::SpeciesTransport st;
+        st.name = sp.name;
+        st.count = 100;
+        st.temperature = 0.0101*scale;
+        st.greenKubo.integral.value = 1.234567890123e-5*scale*sp.diameter/1e-3;
+        st.greenKubo.integral.standardError = 1e-7*scale;
+        st.greenKubo.plateauFound = true;
+        st.diffusivityMsd.value = 1.2e-5*scale;
+        st.diffusivityMsd.standardError = 2e-7*scale;
+        r.species.push_back(st);
+    }
+    r.kineticSieving = {{3e-9*scale, 1e-10*scale, 0}, {7e-9*scale, 2e-10*scale, 0}};
+    r.wallSeconds = 1.5;
+    r.cpuSeconds = 1.4;
+    r.particleStepsPerSecond = 1e6;
+    return r;
+}
+
+inline ConditionInputs inputs(double phi, double x, double T, std::int64_t seed)
+{
+    return {conditionName(phi, x, T, seed), phi, x, T, seed};
+}
+
+} // namespace sdf::store::test
+
+#endif

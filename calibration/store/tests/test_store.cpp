@@ -1,0 +1,240 @@
+// The calibration store: a condition written and read back, the layout
+// (root attributes, condition names), the settings fingerprint, refusal of
+// foreign, corrupt and truncated files, atomic writes.
+#include "store/Store.hpp"
+#include "StoreTestData.hpp"
+
+#include "io/Hdf5File.hpp"
+#include "io/tests/TemporaryDirectory.hpp"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+using namespace sdf::store;
+using sdf::io::test::TemporaryDirectory;
+using sdf::store::test::inputs;
+using sdf::store::test::syntheticResult;
+
+namespace
+{
+
+//- Expects statement to throw StoreError naming file; returns its message.
+template<class F>
+std::string expectStoreError(F statement, const std::string& file)
+{
+    try
+    {
+        statement();
+    }
+    catch (const StoreError& e)
+    {
+        EXPECT_EQ(e.file(), file);
+        EXPECT_NE(std::string(e.what()).find(file), std::string::npos) << e.what();
+        return e.message();
+    }
+    catch (const std::exception& e)
+    {
+        ADD_FAILURE() << "not a StoreError: " << e.what();
+        return "";
+    }
+    ADD_FAILURE() << "no exception";
+    return "";
+}
+
+} // namespace
+
+
+TEST(store, conditionNamesUseSixSignificantDigits)
+{
+    EXPECT_EQ(conditionName(0.3, 0.4, 0.01, 1), "phi0.3_x0.4_T0.01_seed1");
+    EXPECT_EQ(conditionName(0.123456789, 0.5, 1e-4, 12), "phi0.123457_x0.5_T0.0001_seed12");
+}
+
+
+TEST(store, writesAndReadsBackACondition)
+{
+    const TemporaryDirectory dir;
+    const std::string h5 = dir.file("calibration.h5");
+    const sdf::dem::CellRunResult r = syntheticResult();
+    const std::string key = settingsKey(r.settings, "linearSpringDashpot");
+
+    appendCondition(h5, "small", "large", key, inputs(0.3, 0.4, 0.01, 1), r);
+    appendCondition(h5, "small", "large", key, inputs(0.2, 0.4, 0.01, 1), syntheticResult(2));
+
+    const StoreContents contents = readStore(h5);
+    EXPECT_EQ(contents.fineSpecies, "small");
+    EXPECT_EQ(contents.coarseSpecies, "large");
+    ASSERT_EQ(contents.conditions.size(), 2u);
+    const ConditionRecord& c = contents.conditions[1];   // sorted by name
+    EXPECT_EQ(c.name, "phi0.3_x0.4_T0.01_seed1");
+    EXPECT_EQ(c.phi, 0.3);
+    EXPECT_EQ(c.x, 0.4);
+    EXPECT_EQ(c.targetT, 0.01);
+    EXPECT_EQ(c.T, r.temperature);
+    EXPECT_EQ(c.fine.D, r.species[0].greenKubo.integral.value);
+    EXPECT_EQ(*c.fine.DError, r.species[0].greenKubo.integral.standardError);
+    EXPECT_EQ(*c.coarse.eta, r.kineticSieving[1].value);
+    EXPECT_EQ(*c.coarse.etaError, r.kineticSieving[1].standardError);
+    EXPECT_EQ(contents.conditions[0].fine.D, 2*r.species[0].greenKubo.integral.value);
+
+    const auto keys = storedSettingsKeys(h5);
+    ASSERT_EQ(keys.size(), 2u);
+    EXPECT_EQ(keys.at(c.name), key);
+
+    // The layout the other readers (h5dump, h5py, docs) rely on
+    const sdf::io::File f = sdf::io::File::openReadOnly(h5);
+    const sdf::io::Group root = f.root();
+    EXPECT_EQ(root.readString("content"), contentName);
+    const sdf::io::Group g = root.openGroup("conditions/" + c.name);
+    EXPECT_EQ(g.readInt64("seed"), 1);
+    EXPECT_EQ(g.readInt64("particles"), 200);
+    EXPECT_EQ(g.readInt64("equilibrated"), 1);
+    EXPECT_EQ(g.readInt64("steps"), 12345);
+    EXPECT_EQ(g.openGroup("species/small").readString("role"), "fine");
+    EXPECT_EQ(g.openGroup("species/large").readString("role"), "coarse");
+    EXPECT_EQ(g.openGroup("species/large").readDouble("d"), 2e-3);
+    EXPECT_EQ(g.openGroup("species/large").readInt64("DPlateauFound"), 1);
+    EXPECT_EQ(g.openGroup("species/large").readDouble("DMsd"), r.species[1].diffusivityMsd.value);
+    EXPECT_EQ(g.openGroup("timing").readDouble("wallSeconds"), 1.5);
+}
+
+
+TEST(store, settingsKeyFingerprintsEveryDEMSetting)
+{
+    const sdf::dem::CellRunSettings base = syntheticResult().settings;
+    const std::string key = settingsKey(base, "linearSpringDashpot");
+    EXPECT_EQ(settingsKey(base, "linearSpringDashpot"), key);
+    EXPECT_NE(settingsKey(base, "hertzMindlin"), key);
+
+    auto changed = [&](auto change)
+    {
+        sdf::dem::CellRunSettings s = base;
+        change(s);
+        return settingsKey(s, "linearSpringDashpot");
+    };
+    EXPECT_NE(changed([](auto& s) { s.particles = 201; }), key);
+    EXPECT_NE(changed([](auto& s) { s.species[1].diameter = 2.1e-3; }), key);
+    EXPECT_NE(changed([](auto& s) { s.simulation.contact.restitution = 0.8; }), key);
+    EXPECT_NE(changed([](auto& s) { s.simulation.timeStep = 1e-6; }), key);
+    EXPECT_NE(changed([](auto& s) { s.samplingTime = 0.02; }), key);
+    EXPECT_NE(changed([](auto& s) { s.blocks = 4; }), key);
+    // The condition is not part of the fingerprint
+    EXPECT_EQ(changed([](auto& s) { s.solidsFraction = 0.45; s.seed = 7; }), key);
+}
+
+
+TEST(store, conditionWithOtherSettingsIsRefused)
+{
+    const TemporaryDirectory dir;
+    const std::string h5 = dir.file("calibration.h5");
+    const sdf::dem::CellRunResult r = syntheticResult();
+    const std::string key = settingsKey(r.settings, "linearSpringDashpot");
+    const ConditionInputs c = inputs(0.3, 0.4, 0.01, 1);
+    appendCondition(h5, "small", "large", key, c, r);
+
+    const auto stored = storedSettingsKeys(h5);
+    EXPECT_TRUE(isStored(h5, stored, c.name, key));
+    EXPECT_FALSE(isStored(h5, stored, conditionName(0.3, 0.4, 0.01, 2), key));
+
+    sdf::dem::CellRunSettings other = r.settings;
+    other.particles = 500;
+    const std::string otherKey = settingsKey(other, "linearSpringDashpot");
+    try
+    {
+        isStored(h5, stored, c.name, otherKey);
+        ADD_FAILURE() << "a condition run with other settings was accepted";
+    }
+    catch (const SettingsMismatch& e)
+    {
+        EXPECT_EQ(e.storedKey(), key);
+        EXPECT_EQ(e.currentKey(), otherKey);
+        EXPECT_NE(e.message().find(c.name), std::string::npos) << e.message();
+        EXPECT_NE(e.message().find("particles 500"), std::string::npos) << e.message();
+    }
+}
+
+
+TEST(store, foreignCorruptTruncatedAndMissingFilesAreRefused)
+{
+    const TemporaryDirectory dir;
+
+    // Ours, but another content (e.g. a periodicDEM result)
+    const std::string periodic = dir.file("periodicDEM.h5");
+    sdf::io::File::create(periodic).root().setAttribute("content", "periodicDEM cell");
+    EXPECT_NE
+    (
+        expectStoreError([&] { storedSettingsKeys(periodic); }, periodic)
+            .find("not a calibration store"),
+        std::string::npos
+    );
+    expectStoreError([&] { readStore(periodic); }, periodic);
+    const auto sizeBefore = std::filesystem::file_size(periodic);
+    expectStoreError
+    (
+        [&]
+        {
+            appendCondition
+            (
+                periodic, "small", "large", "k", inputs(0.3, 0.4, 0.01, 1), syntheticResult()
+            );
+        },
+        periodic
+    );
+    EXPECT_EQ(std::filesystem::file_size(periodic), sizeBefore);   // untouched
+
+    // Not HDF5 at all
+    const std::string text = dir.file("text.h5");
+    std::ofstream(text) << "not an HDF5 file\n";
+    expectStoreError([&] { storedSettingsKeys(text); }, text);
+
+    // A store cut short (a copy interrupted, a full disk)
+    const std::string h5 = dir.file("calibration.h5");
+    appendCondition(h5, "small", "large", "k", inputs(0.3, 0.4, 0.01, 1), syntheticResult());
+    const auto size = std::filesystem::file_size(h5);
+    std::filesystem::resize_file(h5, size/2);
+    expectStoreError([&] { storedSettingsKeys(h5); }, h5);
+    expectStoreError([&] { readStore(h5); }, h5);
+
+    // Missing: no conditions for the index, an error for a reader
+    EXPECT_TRUE(storedSettingsKeys(dir.file("none.h5")).empty());
+    expectStoreError([&] { readStore(dir.file("none.h5")); }, dir.file("none.h5"));
+}
+
+
+TEST(store, failedAppendLeavesTheStoreAsItWas)
+{
+    const TemporaryDirectory dir;
+    const std::string h5 = dir.file("calibration.h5");
+    const ConditionInputs c = inputs(0.3, 0.4, 0.01, 1);
+    appendCondition(h5, "small", "large", "k", c, syntheticResult());
+
+    // The same condition again: the group exists, the append fails midway
+    const std::string message = expectStoreError
+    (
+        [&] { appendCondition(h5, "small", "large", "k", c, syntheticResult(3)); }, h5
+    );
+    EXPECT_NE(message.find(c.name), std::string::npos) << message;
+    EXPECT_FALSE(std::filesystem::exists(h5 + ".tmp"));
+    const StoreContents contents = readStore(h5);
+    ASSERT_EQ(contents.conditions.size(), 1u);
+    EXPECT_EQ(contents.conditions[0].fine.D, syntheticResult().species[0].greenKubo.integral.value);
+}
+
+
+TEST(store, textFilesAreWrittenAtomically)
+{
+    const TemporaryDirectory dir;
+    const std::string file = dir.file("granularCoefficients");
+    writeTextAtomically(file, "first\n");
+    writeTextAtomically(file, "second\n");
+    std::ifstream in(file);
+    std::string line;
+    std::getline(in, line);
+    EXPECT_EQ(line, "second");
+    EXPECT_FALSE(std::filesystem::exists(file + ".tmp"));
+
+    const std::string nowhere = dir.file("missing/granularCoefficients");
+    expectStoreError([&] { writeTextAtomically(nowhere, "x"); }, nowhere);
+}

@@ -1,0 +1,134 @@
+#ifndef sdf_dem_CellRun_hpp
+#define sdf_dem_CellRun_hpp
+
+// One calibration cell from start to finish: packing, equilibration (detected from the
+// granular temperature), sampling of per-species velocity autocorrelations (multiple-tau,
+// many time origins, block errors), mean-square displacements, the stress split
+// J^1, J^2, J^12 (xy components) and their nine product correlations, collision
+// statistics. Green-Kubo and Einstein estimates come from sdf_correlation.
+// Where things are: the run in CellRun.cpp, its measurements in Measurements.hpp (one
+// interface: Measurement.hpp), the HDF5 file in CellRunHdf5.cpp, the summary and the
+// LAMMPS data file in CellRunOutput.cpp, checkpoints of a Simulation in
+// SimulationCheckpoint.hpp.
+
+#include "Simulation.hpp"
+
+#include "correlation/GreenKubo.hpp"
+#include "correlation/StressGreenKubo.hpp"
+
+#include <array>
+#include <string>
+#include <vector>
+
+namespace sdf::dem
+{
+
+struct CellRunSettings
+{
+    std::vector<Species> species;
+    std::vector<double> volumeFractions;   // solids volume fraction of each species (sum 1)
+    int particles = 1000;
+    double solidsFraction = 0.3;
+    SimulationSettings simulation;         // contact law, dt, mode, target T, shear rate
+    double initialTemperature = -1;        // < 0: target T, or (gammaDot d_mean)^2 if sheared
+    double equilibrationTime = 0;          // [s] minimum equilibration
+    double maxEquilibrationTime = 0;       // [s] 0: 5 x equilibrationTime
+    double samplingTime = 0;               // [s]
+    int sampleEvery = 10;                  // steps between correlator samples
+    int blocks = 8;                        // independent blocks for the errors
+    int maxMsdFrames = 2000;               // stored position frames for the MSD
+    std::uint64_t seed = 1;
+    long progressEvery = 0;                // steps between progress lines (0: quiet)
+    std::string label = "periodicDEM";
+    //- If set: the initial state (after packing and velocities) is also written as a
+    //  LAMMPS data file (atom_style sphere, triclinic box) for peer comparisons.
+    std::string lammpsDataFile;
+    //- If set: measurements are skipped, the cell only runs (throughput benchmarks);
+    //  T is still sampled every sampleEvery steps.
+    bool throughputOnly = false;
+    //- With throughputOnly: > 0 runs the equilibrated state for samplingTime with 1 thread
+    //  and with simulation.threads threads, alternately, this many rounds (both from the
+    //  same state, side by side in one process: a thread speed-up on a shared machine).
+    int threadScalingRounds = 0;
+    //- Checkpoints during sampling (HDF5): the simulation, the correlators,
+    //  series, MSD frames and collision counts are written to checkpointFile every
+    //  checkpointEvery steps (rounded to whole samples); resume = true continues from it
+    //  (same settings) and gives bit for bit the result of an uninterrupted run.
+    std::string checkpointFile;
+    long checkpointEvery = 0;
+    bool resume = false;
+    //- Testing aid: stop the sampling after this many steps (after a checkpoint).
+    long stopAfterSteps = 0;
+};
+
+//- LAMMPS data file (atom_style sphere: id type diameter density x y z; velocities).
+//  streamingShift is added to vx (LAMMPS' deforming box streams as u = gammaDot (y - ylo),
+//  ours as gammaDot (y - ly/2)).
+void writeLammpsData
+(
+    const std::string& path,
+    const Particles& particles,
+    const PeriodicBox& box,
+    const std::vector<Species>& species,
+    double streamingShift = 0
+);
+
+//- Throws std::invalid_argument naming the entry.
+void validateCellRunSettings(const CellRunSettings& settings);
+
+struct SpeciesTransport
+{
+    std::string name;
+    int count = 0;
+    double temperature = 0;                       // <|c|^2> over the sampling
+    correlation::GreenKuboResult greenKubo;       // D from the VACF (per component)
+    correlation::Estimate diffusivityMsd;         // Einstein slope, block error
+    std::vector<double> msdTimes, msd;            // mean MSD (per component)
+};
+
+struct CellRunResult
+{
+    CellRunSettings settings;
+    double timeStep = 0;
+    double boxLength = 0;
+    double meanDiameter = 0;               // solids-volume weighted
+    double temperature = 0;                // mixture <|c|^2> over the sampling
+    double temperatureError = 0;           // block standard error
+    double savageJeffreyR = 0;             // d_mean gammaDot sqrt(3/T) (sheared cells)
+    bool equilibrated = false;
+    double equilibrationTime = 0;
+    std::vector<SpeciesTransport> species;
+    //- diffusion component: -1 isotropic mean (homogeneous cells), 1 = y (sheared cells)
+    int diffusionComponent = -1;
+    // stress: series s_k = J_xy^k / sqrt(V), k over species parts then cross parts
+    std::vector<std::string> stressSeriesNames;
+    std::vector<double> meanStress;        // time mean of J_xy^k / V [Pa]
+    correlation::StressProductIntegrals stressIntegrals;
+    std::vector<correlation::Estimate> kineticSieving;   // binary mixtures only
+    CollisionStatistics collisions;
+    std::vector<int> speciesCounts;
+    bool interrupted = false;              // stopped by stopAfterSteps: results incomplete
+    bool resumed = false;                  // continued from a checkpoint
+    long steps = 0;
+    double wallSeconds = 0;
+    double cpuSeconds = 0;                 // process CPU time of the sampling (all threads)
+    double particleStepsPerSecond = 0;     // per wall-clock second
+    //- threadScalingRounds: per round, particle-steps per wall-clock second on 1 thread and
+    //  on scalingThreads threads
+    int scalingThreads = 0;
+    std::vector<std::array<double, 2>> threadScaling;
+};
+
+CellRunResult runCell(const CellRunSettings& settings);
+
+//- Human-readable summary.
+std::string summary(const CellRunResult& result);
+
+//- Writes inputs, timings, T, R, D_i with errors, correlation functions, stress ACF terms
+//  and collision statistics to an HDF5 file, atomically (written to <path>.tmp and renamed:
+//  a failed run never leaves a half-written file under the final name). Layout: docs/dem.md.
+void writeCellRun(const CellRunResult& result, const std::string& path);
+
+} // namespace sdf::dem
+
+#endif

@@ -1,0 +1,195 @@
+#include "CellRun.hpp"
+
+#include "io/Hdf5File.hpp"
+
+namespace sdf::dem
+{
+
+namespace
+{
+
+void writeGreenKubo(const io::Group& g, const correlation::GreenKuboResult& gk)
+{
+    g.setAttribute("value", gk.integral.value);
+    g.setAttribute("standardError", gk.integral.standardError);
+    g.setAttribute("blocks", std::int64_t(gk.integral.samples));
+    g.setAttribute("plateauFound", std::int64_t(gk.plateauFound ? 1 : 0));
+    g.setAttribute("plateauTime", gk.plateauTime);
+    g.setAttribute("windowEnd", gk.windowEnd);
+    g.writeVector("times", gk.times);
+    g.writeVector("correlation", gk.meanCorrelation);
+    g.writeVector("correlationError", gk.correlationError);
+    g.writeVector("runningIntegral", gk.meanRunningIntegral);
+    g.writeVector("runningIntegralError", gk.runningIntegralError);
+}
+
+//- inputs: the cell's settings
+void writeInputs(const io::Group& inputs, const CellRunResult& r)
+{
+    const CellRunSettings& s = r.settings;
+    inputs.setAttribute("mode", cellModeName(s.simulation.mode));
+    inputs.setAttribute("contactModel", contactModelName(s.simulation.contact.model));
+    inputs.setAttribute("restitution", s.simulation.contact.restitution);
+    inputs.setAttribute("friction", s.simulation.contact.friction);
+    inputs.setAttribute("normalStiffness", s.simulation.contact.normalStiffness);
+    inputs.setAttribute("youngsModulus", s.simulation.contact.youngsModulus);
+    inputs.setAttribute("poissonRatio", s.simulation.contact.poissonRatio);
+    inputs.setAttribute("particles", std::int64_t(s.particles));
+    inputs.setAttribute("solidsFraction", s.solidsFraction);
+    inputs.setAttribute("targetTemperature", s.simulation.targetTemperature);
+    inputs.setAttribute("shearRate", s.simulation.shearRate);
+    inputs.setAttribute("timeStep", r.timeStep);
+    inputs.setAttribute("samplingTime", s.samplingTime);
+    inputs.setAttribute("equilibrationTime", s.equilibrationTime);
+    inputs.setAttribute("sampleEvery", std::int64_t(s.sampleEvery));
+    inputs.setAttribute("blocks", std::int64_t(s.blocks));
+    inputs.setAttribute("seed", std::int64_t(s.seed));
+    inputs.setAttribute("threads", std::int64_t(s.simulation.threads));
+    inputs.setAttribute("temperatureConvention", "T = <|c|^2>, sum of the three components; T1 = T/3");
+    {
+        std::vector<double> d, rho;
+        for (const Species& sp : s.species) { d.push_back(sp.diameter); rho.push_back(sp.density); }
+        inputs.writeVector("diameter", d);
+        inputs.writeVector("density", rho);
+        inputs.writeVector("volumeFractions", s.volumeFractions);
+        std::vector<std::int64_t> counts(r.speciesCounts.begin(), r.speciesCounts.end());
+        inputs.writeInt64Vector("counts", counts);
+        std::string names;
+        for (std::size_t k = 0; k < s.species.size(); ++k)
+        {
+            names += (k ? " " : "") + s.species[k].name;
+        }
+        inputs.setAttribute("speciesNames", names);
+    }
+}
+
+//- run: steps, timings, equilibration
+void writeRun(const io::Group& run, const CellRunResult& r)
+{
+    run.setAttribute("version", "sdf_dem 1");
+    run.setAttribute("boxLength", r.boxLength);
+    run.setAttribute("steps", std::int64_t(r.steps));
+    run.setAttribute("wallSeconds", r.wallSeconds);
+    run.setAttribute("cpuSeconds", r.cpuSeconds);
+    run.setAttribute("particleStepsPerSecond", r.particleStepsPerSecond);
+    run.setAttribute("equilibrated", std::int64_t(r.equilibrated ? 1 : 0));
+    run.setAttribute("equilibrationTime", r.equilibrationTime);
+}
+
+//- results: the temperature and the diffusion measurements per species (velocity
+//  autocorrelation, mean-square displacement)
+void writeSpeciesResults(const io::Group& res, const CellRunResult& r)
+{
+    res.setAttribute("temperature", r.temperature);
+    res.setAttribute("temperatureError", r.temperatureError);
+    res.setAttribute("meanDiameter", r.meanDiameter);
+    res.setAttribute("savageJeffreyR", r.savageJeffreyR);
+    res.setAttribute("diffusionComponent", std::int64_t(r.diffusionComponent));
+    const io::Group sp = res.createGroup("species");
+    for (const SpeciesTransport& st : r.species)
+    {
+        const io::Group g = sp.createGroup(st.name);
+        g.setAttribute("count", std::int64_t(st.count));
+        g.setAttribute("temperature", st.temperature);
+        g.setAttribute("diffusivityMsd", st.diffusivityMsd.value);
+        g.setAttribute("diffusivityMsdError", st.diffusivityMsd.standardError);
+        writeGreenKubo(g.createGroup("greenKubo"), st.greenKubo);
+        if (!st.msd.empty())
+        {
+            g.writeVector("msdTimes", st.msdTimes);
+            g.writeVector("msd", st.msd);
+        }
+    }
+}
+
+//- results/stress: the stress autocorrelation measurement
+void writeStress(const io::Group& stress, const CellRunResult& r)
+{
+    std::string names;
+    for (std::size_t k = 0; k < r.stressSeriesNames.size(); ++k)
+    {
+        names += (k ? " " : "") + r.stressSeriesNames[k];
+    }
+    stress.setAttribute("series", names);
+    stress.setAttribute("definition", "s_k = J_xy^k / sqrt(V); integrals of <s_i(0) s_j(t)>");
+    stress.writeVector("meanShearStress", r.meanStress);
+    if (!r.stressIntegrals.terms.empty())
+    {
+        stress.setAttribute("crossToProductRatio", r.stressIntegrals.crossToProductRatio);
+        const std::size_t n = r.stressIntegrals.seriesCount;
+        Eigen::MatrixXd value(n, n), error(n, n);
+        for (std::size_t i = 0; i < n; ++i)
+        {
+            for (std::size_t j = 0; j < n; ++j)
+            {
+                value(i, j) = r.stressIntegrals.term(i, j).integral.value;
+                error(i, j) = r.stressIntegrals.term(i, j).integral.standardError;
+                writeGreenKubo
+                (
+                    stress.createGroup("term_" + std::to_string(i) + "_" + std::to_string(j)),
+                    r.stressIntegrals.term(i, j)
+                );
+            }
+        }
+        stress.writeMatrix("integrals", value);
+        stress.writeMatrix("integralErrors", error);
+        writeGreenKubo(stress.createGroup("total"), r.stressIntegrals.total);
+        std::vector<double> eta, etaErr;
+        for (const auto& e : r.kineticSieving) { eta.push_back(e.value); etaErr.push_back(e.standardError); }
+        if (!eta.empty())
+        {
+            stress.writeVector("kineticSieving", eta);
+            stress.writeVector("kineticSievingError", etaErr);
+        }
+    }
+}
+
+//- results/collisions: the collision measurement
+void writeCollisions(const io::Group& col, const CellRunResult& r)
+{
+    col.setAttribute("elapsedTime", r.collisions.elapsedTime);
+    col.setAttribute("impactEnergy", "0.5 m* v_n^2 at the first step of a contact [J]");
+    col.writeVector("binEdges", r.collisions.binEdges);
+    {
+        std::vector<std::int64_t> counts(r.collisions.counts.begin(), r.collisions.counts.end());
+        col.writeInt64Vector("counts", counts);
+        const int n = int(r.species.size());
+        Eigen::MatrixXd hist(r.collisions.histogram.size(),
+                             r.collisions.histogram.empty() ? 0 : r.collisions.histogram[0].size());
+        for (std::size_t a = 0; a < r.collisions.histogram.size(); ++a)
+        {
+            for (std::size_t b = 0; b < r.collisions.histogram[a].size(); ++b)
+            {
+                hist(a, b) = double(r.collisions.histogram[a][b]);
+            }
+        }
+        col.writeMatrix("histogram", hist);
+        Eigen::MatrixXd freq(n, n);
+        for (int a = 0; a < n; ++a)
+        {
+            for (int b = 0; b < n; ++b)
+            {
+                freq(a, b) = r.collisions.frequencyPerParticle(a, b, r.speciesCounts);
+            }
+        }
+        col.writeMatrix("frequencyPerParticle", freq);
+        col.writeVector("energySum", r.collisions.energySum);
+    }
+}
+
+} // namespace
+
+void writeCellRun(const CellRunResult& r, const std::string& path)
+{
+    io::AtomicFile file = io::AtomicFile::create(path);
+    const io::Group root = file.root();
+    writeInputs(root.createGroup("inputs"), r);
+    writeRun(root.createGroup("run"), r);
+    const io::Group results = root.createGroup("results");
+    writeSpeciesResults(results, r);
+    writeStress(results.createGroup("stress"), r);
+    writeCollisions(results.createGroup("collisions"), r);
+    file.commit();
+}
+
+} // namespace sdf::dem

@@ -1,0 +1,441 @@
+#include "Measurements.hpp"
+
+#include "correlation/GreenKubo.hpp"
+#include "correlation/Statistics.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace sdf::dem
+{
+
+namespace
+{
+
+correlation::MultipleTauSettings correlatorSettings()
+{
+    correlation::MultipleTauSettings m;
+    m.pointsPerLevel = 16;
+    m.averagingFactor = 2;
+    m.levels = 24;
+    return m;
+}
+
+correlation::PlateauSettings plateauSettings(const SamplingPlan& plan)
+{
+    correlation::PlateauSettings plateau;
+    plateau.earliestTime = plan.sampleInterval;
+    return plateau;
+}
+
+template<class Map>
+const typename Map::mapped_type& entry(const Map& map, const std::string& key, const std::string& source)
+{
+    const auto it = map.find(key);
+    if (it == map.end()) throw std::runtime_error("checkpoint '" + source + "': missing " + key);
+    return it->second;
+}
+
+} // namespace
+
+SamplingPlan::SamplingPlan(const CellRunSettings& settings, double dt)
+:
+    totalSteps(std::max(1L, std::lround(settings.samplingTime/dt))),
+    samples(std::max(1L, totalSteps/settings.sampleEvery)),
+    samplesPerBlock(std::max(1L, samples/settings.blocks)),
+    sampleInterval(settings.sampleEvery*dt),
+    blocks(settings.blocks),
+    diffusionComponent(settings.simulation.mode == CellMode::leesEdwards ? 1 : -1)
+{}
+
+std::vector<std::vector<int>> speciesMembers(const Simulation& sim)
+{
+    std::vector<std::vector<int>> members(sim.species().size());
+    for (int id = 0; id < int(sim.particles().size()); ++id)
+    {
+        members[sim.particles().species[sim.indexOfId(id)]].push_back(id);
+    }
+    return members;
+}
+
+// ---------------------------------------------------------------- temperature
+
+TemperatureMeasurement::TemperatureMeasurement(int nSpecies, int blocks, bool perSpecies)
+:
+    blocks_(blocks),
+    perSpecies_(perSpecies),
+    species_(perSpecies ? nSpecies : 0)
+{}
+
+void TemperatureMeasurement::sample(const Simulation& x, long)
+{
+    mixture_.push_back(x.temperature());
+    if (!perSpecies_) return;
+    const std::vector<double> ts = x.speciesTemperatures();
+    for (std::size_t s = 0; s < species_.size(); ++s) species_[s].push_back(ts[s]);
+}
+
+void TemperatureMeasurement::save(io::Checkpoint& c) const
+{
+    c.vectors["cellRun_temperature"] = mixture_;
+    for (std::size_t s = 0; s < species_.size(); ++s)
+    {
+        c.vectors["cellRun_speciesT" + std::to_string(s)] = species_[s];
+    }
+}
+
+void TemperatureMeasurement::load(const io::Checkpoint& c, const std::string& f)
+{
+    mixture_ = entry(c.vectors, "cellRun_temperature", f);
+    for (std::size_t s = 0; s < species_.size(); ++s)
+    {
+        species_[s] = entry(c.vectors, "cellRun_speciesT" + std::to_string(s), f);
+    }
+}
+
+void TemperatureMeasurement::finish(CellRunResult& result, long) const
+{
+    const correlation::Estimate T = correlation::blockAverage(mixture_, blocks_);
+    result.temperature = T.value;
+    result.temperatureError = T.standardError;
+    const SimulationSettings& sim = result.settings.simulation;
+    if (sim.mode == CellMode::leesEdwards && T.value > 0)
+    {
+        result.savageJeffreyR = result.meanDiameter*std::abs(sim.shearRate)*std::sqrt(3.0/T.value);
+    }
+    for (std::size_t s = 0; s < species_.size(); ++s)
+    {
+        double sumT = 0;
+        for (double v : species_[s]) sumT += v;
+        result.species[s].temperature = species_[s].empty() ? 0 : sumT/species_[s].size();
+    }
+}
+
+// ---------------------------------------------------------------- velocity autocorrelation
+
+VelocityAutocorrelation::VelocityAutocorrelation
+(
+    std::vector<std::vector<int>> members,
+    const SamplingPlan& plan
+)
+:
+    members_(std::move(members)),
+    plan_(plan)
+{
+    for (const std::vector<int>& m : members_)
+    {
+        correlators_.emplace_back(std::max<std::size_t>(1, m.size()), 3, correlatorSettings());
+    }
+}
+
+void VelocityAutocorrelation::sample(const Simulation& x, long)
+{
+    for (std::size_t s = 0; s < members_.size(); ++s)
+    {
+        const std::vector<int>& m = members_[s];
+        if (m.empty()) continue;
+        Eigen::ArrayXXd v(m.size(), 3);
+        for (std::size_t k = 0; k < m.size(); ++k)
+        {
+            const Eigen::Vector3d c = x.fluctuatingVelocity(x.indexOfId(m[k]));
+            v(k, 0) = c.x(); v(k, 1) = c.y(); v(k, 2) = c.z();
+        }
+        correlators_[s].add(v);
+    }
+}
+
+void VelocityAutocorrelation::closeBlock()
+{
+    for (auto& c : correlators_) c.closeBlock();
+}
+
+void VelocityAutocorrelation::save(io::Checkpoint& c) const
+{
+    for (std::size_t s = 0; s < correlators_.size(); ++s)
+    {
+        const std::string k = std::to_string(s);
+        const correlation::MultipleTauState st = correlators_[s].exportState();
+        c.vectors["cellRun_vacfReals" + k] = st.reals;
+        c.integerVectors["cellRun_vacfIntegers" + k] = st.integers;
+    }
+}
+
+void VelocityAutocorrelation::load(const io::Checkpoint& c, const std::string& f)
+{
+    for (std::size_t s = 0; s < correlators_.size(); ++s)
+    {
+        const std::string k = std::to_string(s);
+        correlation::MultipleTauState st;
+        st.reals = entry(c.vectors, "cellRun_vacfReals" + k, f);
+        st.integers = entry(c.integerVectors, "cellRun_vacfIntegers" + k, f);
+        correlators_[s].importState(st);
+    }
+}
+
+void VelocityAutocorrelation::finish(CellRunResult& result, long) const
+{
+    for (std::size_t s = 0; s < correlators_.size(); ++s)
+    {
+        if (members_[s].empty() || correlators_[s].blocks().size() < 2) continue;
+        result.species[s].greenKubo = correlation::greenKubo
+        (
+            correlators_[s].blocks(), plan_.sampleInterval, plan_.diffusionComponent,
+            plateauSettings(plan_)
+        );
+    }
+}
+
+// ---------------------------------------------------------------- mean-square displacement
+
+MeanSquareDisplacementMeasurement::MeanSquareDisplacementMeasurement
+(
+    std::vector<std::vector<int>> members,
+    const SamplingPlan& plan,
+    int maxFrames
+)
+:
+    members_(std::move(members)),
+    plan_(plan),
+    framesEvery_(std::max(1L, (plan.samples + maxFrames - 1)/maxFrames)),
+    frames_(members_.size())
+{}
+
+void MeanSquareDisplacementMeasurement::sample(const Simulation& x, long index)
+{
+    if (index % framesEvery_ != 0) return;
+    const Particles& p = x.particles();
+    for (std::size_t s = 0; s < members_.size(); ++s)
+    {
+        const std::vector<int>& m = members_[s];
+        if (m.empty()) continue;
+        Eigen::MatrixX3d pos(m.size(), 3);
+        for (std::size_t k = 0; k < m.size(); ++k)
+        {
+            const int i = x.indexOfId(m[k]);
+            pos(k, 0) = p.ux[i]; pos(k, 1) = p.uy[i]; pos(k, 2) = p.uz[i];
+        }
+        frames_[s].push_back(pos);
+    }
+}
+
+void MeanSquareDisplacementMeasurement::save(io::Checkpoint& c) const
+{
+    for (std::size_t s = 0; s < frames_.size(); ++s)
+    {
+        std::vector<double> v;
+        for (const Eigen::MatrixX3d& m : frames_[s])
+        {
+            for (Eigen::Index r = 0; r < m.rows(); ++r)
+            {
+                v.push_back(m(r, 0)); v.push_back(m(r, 1)); v.push_back(m(r, 2));
+            }
+        }
+        c.vectors["cellRun_frames" + std::to_string(s)] = v;
+    }
+}
+
+void MeanSquareDisplacementMeasurement::load(const io::Checkpoint& c, const std::string& f)
+{
+    for (std::size_t s = 0; s < frames_.size(); ++s)
+    {
+        const std::vector<double>& fl = entry(c.vectors, "cellRun_frames" + std::to_string(s), f);
+        const std::size_t rows = members_[s].size();
+        frames_[s].clear();
+        if (rows == 0) continue;
+        for (std::size_t off = 0; off + 3*rows <= fl.size(); off += 3*rows)
+        {
+            Eigen::MatrixX3d m(rows, 3);
+            for (std::size_t r = 0; r < rows; ++r)
+            {
+                m(r, 0) = fl[off + 3*r]; m(r, 1) = fl[off + 3*r + 1]; m(r, 2) = fl[off + 3*r + 2];
+            }
+            frames_[s].push_back(m);
+        }
+    }
+}
+
+void MeanSquareDisplacementMeasurement::finish(CellRunResult& result, long) const
+{
+    // Einstein: MSD of y (sheared) or x+y+z (homogeneous), fit over the last 60 % of the
+    // lag range, per block
+    const int comp = plan_.diffusionComponent;
+    const std::size_t nBlocks = std::size_t(plan_.blocks);
+    for (std::size_t s = 0; s < frames_.size(); ++s)
+    {
+        const std::size_t nFrames = frames_[s].size();
+        if (members_[s].empty() || nFrames < 8*nBlocks) continue;
+        const std::size_t maxLag = nFrames/nBlocks/2;
+        const auto blockMsd = correlation::blockMeanSquareDisplacements(frames_[s], maxLag, nBlocks);
+        const double frameInterval = framesEvery_*plan_.sampleInterval;
+        std::vector<double> times(maxLag + 1);
+        for (std::size_t k = 0; k <= maxLag; ++k) times[k] = k*frameInterval;
+        std::vector<std::vector<double>> series;
+        for (const Eigen::MatrixX3d& b : blockMsd)
+        {
+            std::vector<double> v(maxLag + 1);
+            for (std::size_t k = 0; k <= maxLag; ++k)
+            {
+                v[k] = comp == 1 ? b(k, 1) : b(k, 0) + b(k, 1) + b(k, 2);
+            }
+            series.push_back(v);
+        }
+        const auto einstein = correlation::einsteinDiffusivity
+        (
+            times, series, 0.4*times.back(), times.back(), comp == 1 ? 1 : 3
+        );
+        SpeciesTransport& st = result.species[s];
+        st.diffusivityMsd = einstein.diffusivity;
+        st.msdTimes = times;
+        st.msd = einstein.meanMsd;
+    }
+}
+
+// ---------------------------------------------------------------- stress
+
+std::vector<std::string> StressAutocorrelation::seriesNames(const std::vector<Species>& species)
+{
+    std::vector<std::string> names;
+    const std::size_t n = species.size();
+    for (std::size_t s = 0; s < n; ++s) names.push_back("J_" + species[s].name);
+    for (std::size_t s = 0; s < n; ++s)
+    {
+        for (std::size_t t = s + 1; t < n; ++t)
+        {
+            names.push_back("J_" + species[s].name + "_" + species[t].name);
+        }
+    }
+    return names;
+}
+
+namespace
+{
+
+std::vector<std::pair<int, int>> stressParts(int nSpecies)
+{
+    std::vector<std::pair<int, int>> parts;
+    for (int s = 0; s < nSpecies; ++s) parts.push_back({s, s});
+    for (int s = 0; s < nSpecies; ++s)
+    {
+        for (int t = s + 1; t < nSpecies; ++t) parts.push_back({s, t});
+    }
+    return parts;
+}
+
+} // namespace
+
+StressAutocorrelation::StressAutocorrelation
+(
+    const std::vector<Species>& species,
+    double volume,
+    const SamplingPlan& plan
+)
+:
+    parts_(stressParts(int(species.size()))),
+    volume_(volume),
+    plan_(plan),
+    correlator_(parts_.size(), correlatorSettings()),
+    stressSum_(parts_.size(), 0.0)
+{}
+
+void StressAutocorrelation::sample(const Simulation& x, long)
+{
+    const double sqrtV = std::sqrt(volume_);
+    const StressSplit J = x.stressSplit();
+    Eigen::VectorXd series(parts_.size());
+    for (std::size_t k = 0; k < parts_.size(); ++k)
+    {
+        const auto [a, b] = parts_[k];
+        const Eigen::Matrix3d Jk = a == b ? J.speciesStress(a) : J.crossStress(a, b);
+        series[k] = Jk(0, 1)/sqrtV;
+        stressSum_[k] += Jk(0, 1)/volume_;
+    }
+    correlator_.add(series);
+}
+
+void StressAutocorrelation::closeBlock()
+{
+    correlator_.closeBlock();
+}
+
+void StressAutocorrelation::save(io::Checkpoint& c) const
+{
+    c.vectors["cellRun_meanStress"] = stressSum_;
+    const correlation::MultipleTauState ss = correlator_.exportState();
+    c.vectors["cellRun_stressReals"] = ss.reals;
+    c.integerVectors["cellRun_stressIntegers"] = ss.integers;
+}
+
+void StressAutocorrelation::load(const io::Checkpoint& c, const std::string& f)
+{
+    stressSum_ = entry(c.vectors, "cellRun_meanStress", f);
+    correlation::MultipleTauState ss;
+    ss.reals = entry(c.vectors, "cellRun_stressReals", f);
+    ss.integers = entry(c.integerVectors, "cellRun_stressIntegers", f);
+    correlator_.importState(ss);
+}
+
+void StressAutocorrelation::finish(CellRunResult& result, long samples) const
+{
+    result.meanStress = stressSum_;
+    for (double& m : result.meanStress) m /= std::max(1L, samples);
+    if (correlator_.blocks().size() < 2) return;
+    result.stressIntegrals = correlation::stressProductIntegrals
+    (
+        correlator_.blocks(), plan_.sampleInterval, parts_.size(), plateauSettings(plan_)
+    );
+    if (result.settings.species.size() == 2)
+    {
+        result.kineticSieving = correlation::kineticSievingCoefficients
+        (
+            result.stressIntegrals, result.settings.volumeFractions
+        );
+    }
+}
+
+// ---------------------------------------------------------------- collisions
+
+CollisionMeasurement::CollisionMeasurement(Simulation& simulation, double energyScale)
+:
+    simulation_(simulation)
+{
+    simulation_.enableCollisionStatistics(1e-4*energyScale, 1e3*energyScale, 56);
+}
+
+void CollisionMeasurement::save(io::Checkpoint& c) const
+{
+    const CollisionStatistics& col = simulation_.collisionStatistics();
+    c.scalars["cellRun_collisionTime"] = col.elapsedTime;
+    c.vectors["cellRun_collisionEnergy"] = col.energySum;
+    c.integerVectors["cellRun_collisionCounts"].assign(col.counts.begin(), col.counts.end());
+    std::vector<std::int64_t> hist;
+    for (const auto& h : col.histogram) hist.insert(hist.end(), h.begin(), h.end());
+    c.integerVectors["cellRun_collisionHistogram"] = hist;
+}
+
+void CollisionMeasurement::load(const io::Checkpoint& c, const std::string& f)
+{
+    CollisionStatistics col = simulation_.collisionStatistics();
+    col.elapsedTime = entry(c.scalars, "cellRun_collisionTime", f);
+    col.energySum = entry(c.vectors, "cellRun_collisionEnergy", f);
+    const auto& counts = entry(c.integerVectors, "cellRun_collisionCounts", f);
+    col.counts.assign(counts.begin(), counts.end());
+    const auto& hist = entry(c.integerVectors, "cellRun_collisionHistogram", f);
+    const std::size_t nb = col.histogram.empty() ? 0 : col.histogram[0].size();
+    if (hist.size() != nb*col.histogram.size())
+    {
+        throw std::runtime_error("checkpoint '" + f + "': collision histogram does not fit");
+    }
+    for (std::size_t a = 0; a < col.histogram.size(); ++a)
+    {
+        for (std::size_t b = 0; b < nb; ++b) col.histogram[a][b] = hist[a*nb + b];
+    }
+    simulation_.setCollisionStatistics(col);
+}
+
+void CollisionMeasurement::finish(CellRunResult& result, long) const
+{
+    result.collisions = simulation_.collisionStatistics();
+}
+
+} // namespace sdf::dem

@@ -1,0 +1,126 @@
+#ifndef sdf_dem_Measurements_hpp
+#define sdf_dem_Measurements_hpp
+
+// The measurements of a cell run (interface: Measurement.hpp): granular temperature,
+// velocity autocorrelation (Green-Kubo D), mean-square displacement (Einstein D), the
+// stress autocorrelations of the per-species stress split (eta), collision and
+// impact-energy statistics.
+
+#include "Measurement.hpp"
+
+#include "correlation/MeanSquareDisplacement.hpp"
+#include "correlation/MultipleTauCorrelator.hpp"
+
+namespace sdf::dem
+{
+
+//- Particle ids of each species, in increasing id (the same on resume, whatever the
+//  particles' current order).
+std::vector<std::vector<int>> speciesMembers(const Simulation& simulation);
+
+//- Mixture temperature per sample (block average and error; the Savage-Jeffrey R of a
+//  sheared cell) and, if perSpecies, each species' mean temperature.
+class TemperatureMeasurement : public Measurement
+{
+public:
+    TemperatureMeasurement(int nSpecies, int blocks, bool perSpecies);
+    void sample(const Simulation& simulation, long index) override;
+    void save(io::Checkpoint& checkpoint) const override;
+    void load(const io::Checkpoint& checkpoint, const std::string& source) override;
+    void finish(CellRunResult& result, long samples) const override;
+
+private:
+    int blocks_;
+    bool perSpecies_;
+    std::vector<double> mixture_;
+    std::vector<std::vector<double>> species_;
+};
+
+//- Per-species velocity autocorrelation (multiple-tau, many time origins, in blocks) and
+//  its Green-Kubo integral D.
+class VelocityAutocorrelation : public Measurement
+{
+public:
+    VelocityAutocorrelation(std::vector<std::vector<int>> members, const SamplingPlan& plan);
+    void sample(const Simulation& simulation, long index) override;
+    void closeBlock() override;
+    void save(io::Checkpoint& checkpoint) const override;
+    void load(const io::Checkpoint& checkpoint, const std::string& source) override;
+    void finish(CellRunResult& result, long samples) const override;
+
+private:
+    std::vector<std::vector<int>> members_;
+    SamplingPlan plan_;
+    std::vector<correlation::MultipleTauCorrelator> correlators_;
+};
+
+//- Per-species mean-square displacement from stored position frames (at most maxFrames)
+//  and its Einstein slope D (y for sheared cells, x+y+z otherwise).
+class MeanSquareDisplacementMeasurement : public Measurement
+{
+public:
+    MeanSquareDisplacementMeasurement
+    (
+        std::vector<std::vector<int>> members,
+        const SamplingPlan& plan,
+        int maxFrames
+    );
+    void sample(const Simulation& simulation, long index) override;
+    void save(io::Checkpoint& checkpoint) const override;
+    void load(const io::Checkpoint& checkpoint, const std::string& source) override;
+    void finish(CellRunResult& result, long samples) const override;
+
+private:
+    std::vector<std::vector<int>> members_;
+    SamplingPlan plan_;
+    long framesEvery_;    // samples between frames
+    std::vector<correlation::VectorFrames> frames_;
+};
+
+//- The xy stress split J^s, J^{st} per sample: time means and the product
+//  autocorrelations, integrated (seed eqs 8-13) to the kinetic-sieving coefficients eta
+//  of a binary mixture.
+class StressAutocorrelation : public Measurement
+{
+public:
+    //- Series names: the species parts, then the cross parts.
+    static std::vector<std::string> seriesNames(const std::vector<Species>& species);
+
+    StressAutocorrelation
+    (
+        const std::vector<Species>& species,
+        double volume,
+        const SamplingPlan& plan
+    );
+    void sample(const Simulation& simulation, long index) override;
+    void closeBlock() override;
+    void save(io::Checkpoint& checkpoint) const override;
+    void load(const io::Checkpoint& checkpoint, const std::string& source) override;
+    void finish(CellRunResult& result, long samples) const override;
+
+private:
+    std::vector<std::pair<int, int>> parts_;
+    double volume_;
+    SamplingPlan plan_;
+    correlation::SeriesProductCorrelator correlator_;
+    std::vector<double> stressSum_;    // sum over samples of J_xy^k / V
+};
+
+//- Collision counts and impact-energy histograms, counted by the Simulation's force pass
+//  (enabled here: 56 log bins from 1e-4 to 1e3 x the energy scale).
+class CollisionMeasurement : public Measurement
+{
+public:
+    CollisionMeasurement(Simulation& simulation, double energyScale);
+    void sample(const Simulation&, long) override {}
+    void save(io::Checkpoint& checkpoint) const override;
+    void load(const io::Checkpoint& checkpoint, const std::string& source) override;
+    void finish(CellRunResult& result, long samples) const override;
+
+private:
+    Simulation& simulation_;
+};
+
+} // namespace sdf::dem
+
+#endif

@@ -1,0 +1,69 @@
+# shellcheck shell=bash
+# Bad input to segregationDegradationFoam (sourced by tests/run; tests
+# solver/input/*): each kind of broken case stops with a fatal error naming
+# the entry and writes no time directory.
+
+# A small prepared column case (validation column, 10 cells) for bad input
+prepare_small_case()
+{
+    local dir="$1"
+    copy_case "$validationDir/segregationDiffusionColumn" "$dir"
+    echo "N 10; endTime 0.05;" > "$dir/system/caseParameters"
+    blockMesh -case "$dir" > "$dir/log.blockMesh" 2>&1 || return 1
+    cp -r "$dir/0.orig" "$dir/0"
+}
+
+# test_bad_input KIND: break the case one way, expect a fatal error that
+# names the entry, and no time directory written
+test_bad_input()
+{
+    local kind="$1" dir="$workRoot/badInput-$1" expect=()
+    prepare_small_case "$dir" || return 1
+    local gp="$dir/constant/granularProperties"
+    case "$kind" in
+        unknownModel)
+            foamDictionary -entry diffusivity/model -set fancy "$gp" > /dev/null
+            expect=("Unknown diffusivity model type fancy" "powerLaw" "kineticTheory" "constant" "none") ;;
+        missingField)
+            rm "$dir/0/n.coarse"
+            expect=("n.coarse") ;;
+        badDiameter)
+            foamDictionary -entry species/coarse/d -set -2e-3 "$gp" > /dev/null
+            expect=("Non-positive diameter" "coarse") ;;
+        negativeInitial)
+            foamDictionary -entry internalField -set "uniform -0.1" "$dir/0/n.fine" > /dev/null
+            expect=("n.fine" "-0.1" ">= 0") ;;
+        nanInitial)
+            sed -i 's/^internalField .*/internalField   uniform nan;/' "$dir/0/n.fine"
+            expect=("n.fine") ;;
+        missingCoefficient)
+            foamDictionary -entry percolation/grayThorntonCoeffs/Sr -remove "$gp" > /dev/null
+            expect=("Sr" "grayThorntonCoeffs") ;;
+        missingMechanism)
+            foamDictionary -entry kineticSieving -remove "$gp" > /dev/null
+            expect=("kineticSieving") ;;
+        *) echo "unknown kind $kind"; return 1 ;;
+    esac
+
+    if segregationDegradationFoam -case "$dir" > "$dir/log.solver" 2>&1
+    then
+        echo "solver accepted bad input ($kind)"; return 1
+    fi
+    cat "$dir/log.solver" | sed -n '/FOAM FATAL/,/FOAM exiting\|FOAM aborting/p' | head -20
+    local e
+    for e in "${expect[@]}"
+    do
+        if ! grep -qF -- "$e" "$dir/log.solver"
+        then
+            echo "error message lacks '$e'"; return 1
+        fi
+    done
+    if grep -q "Segmentation\|printStack" "$dir/log.solver"
+    then
+        echo "crashed instead of a clear error"; return 1
+    fi
+    local written
+    written=$(find "$dir" -mindepth 1 -maxdepth 1 -type d -regextype posix-extended -regex '.*/[0-9.eE+-]+' ! -name 0 | head -1)
+    [ -z "$written" ] || { echo "a time directory was written: $written"; return 1; }
+    echo "clear fatal error for $kind, nothing written"
+}

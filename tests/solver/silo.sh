@@ -1,0 +1,103 @@
+# shellcheck shell=bash
+# segregationDegradationFoam on tutorials/silo2D (sourced by tests/run;
+# tests solver/silo/*): discharge, emptying, calibrated laws, parallel.
+
+# Kinematic bulk flow on silo2D: the Beverloo rate by hand, the wedge's share
+# of it through the outlet, a divergence-free flux and the outlet record
+test_kinematic_discharge()
+{
+    local dir="$workRoot/kinematicDischarge"
+    copy_case "$projectDir/tutorials/silo2D" "$dir"
+    foamDictionary -entry endTime -set 0.01 "$dir/system/controlDict" > /dev/null
+    : > "$dir/system/caseParameters"
+    blockMesh -case "$dir" > "$dir/log.blockMesh" 2>&1 || return 1
+    cp -r "$dir/0.orig" "$dir/0"
+    segregationDegradationFoam -case "$dir" > "$dir/log.solver" 2>&1 || { tail -30 "$dir/log.solver"; return 1; }
+    python3 - "$dir" <<'PY'
+import math, re, sys
+case = sys.argv[1]
+log = open(case + "/log.solver").read()
+Q = float(re.search(r"Beverloo discharge rate Q = (\S+)", log).group(1))
+Qmesh = float(re.search(r"outlet flux (\S+) m3/s on the mesh", log).group(1))
+div = float(re.search(r"max \|div\(phi\)\| V / sum\|phi\| = (\S+)", log).group(1))
+# Beverloo by hand: C sqrt(g) (D0 - k d)^2.5 (tan 30)^-0.35, d = 0.8*1 mm + 0.2*2 mm
+Qhand = 0.58 * math.sqrt(9.81) * (0.04 - 1.5 * 1.2e-3) ** 2.5 * math.tan(math.radians(30)) ** -0.35
+share = math.sin(math.radians(5)) / (2 * math.pi)   # 5 deg wedge of the outlet disc
+rows = [l.split() for l in open(case + "/postProcessing/outletComposition/0/outlet.dat") if not l.startswith("#")]
+Qout, mass, fracFine = float(rows[0][1]), float(rows[0][2]), float(rows[0][5])
+print("Beverloo Q %.6e (hand %.6e); outlet flux %.6e = %.6f of Q (wedge share %.6f);"
+      " max div %.1e; first outlet Q %.6e, mass flow %.6e (expected %.6e), fine fraction %.6f"
+      % (Q, Qhand, Qmesh, Qmesh / Q, share, div, Qout, mass, Qmesh * 0.6 * 2500, fracFine))
+ok = abs(Q / Qhand - 1) < 1e-8 and abs(Qmesh / Q / share - 1) < 1e-3 and div < 1e-8
+ok = ok and abs(Qout / Qmesh - 1) < 1e-9 and abs(mass / (Qmesh * 0.6 * 2500) - 1) < 1e-6 and abs(fracFine - 0.8) < 1e-4
+sys.exit(0 if ok else 1)
+PY
+}
+
+# silo2D for a few seconds: the top cells go from full to empty, every field
+# stays finite and bounded, and the solids that left through the outlet
+# balance the loss of solids in the silo
+test_silo_empties()
+{
+    local dir="$workRoot/siloEmpties"
+    copy_case "$projectDir/tutorials/silo2D" "$dir"
+    foamDictionary -entry writeFields -set "(T gammaDot dMean D nTotal)" "$dir/constant/granularProperties" > /dev/null
+    foamDictionary -entry endTime -set 4 "$dir/system/controlDict" > /dev/null
+    foamDictionary -entry writeInterval -set 1 "$dir/system/controlDict" > /dev/null
+    : > "$dir/system/caseParameters"
+    blockMesh -case "$dir" > "$dir/log.blockMesh" 2>&1 || return 1
+    cp -r "$dir/0.orig" "$dir/0"
+    segregationDegradationFoam -case "$dir" > "$dir/log.solver" 2>&1 || { tail -30 "$dir/log.solver"; return 1; }
+    python3 -m sdfoam.fieldStats "$dir" emptied || return 1
+    python3 -m sdfoam.fieldStats "$dir" bounds --tol 1e-8 || return 1
+    python3 - "$dir" <<'PY'
+import re, sys
+case = sys.argv[1]
+total = [float(m.group(1)) for m in re.finditer(r"Solids: total volume (\S+)", open(case + "/log.solver").read())]
+# volume of solids leaving: sum over species of cumulative mass / rho (2500)
+rows = [l.split() for l in open(case + "/postProcessing/outletComposition/0/outlet.dat") if not l.startswith("#")]
+cum = sum(float(x) for x in rows[-1][-2:]) / 2500.0
+top = [l.split() for l in open(case + "/postProcessing/outletComposition/0/top.dat") if not l.startswith("#")]
+cumTop = sum(float(x) for x in top[-1][-2:]) / 2500.0
+initial = total[0] + sum(float(x) for x in rows[0][-2:]) / 2500.0  # first logged step already lost a little
+balance = (initial - total[-1]) - (cum + cumTop)
+print("solids lost from the silo %.6e m3, left through outlet+top %.6e m3, imbalance %.2e (relative %.2e)"
+      % (initial - total[-1], cum + cumTop, balance, abs(balance) / (initial - total[-1])))
+sys.exit(0 if abs(balance) / (initial - total[-1]) < 1e-6 else 1)
+PY
+}
+
+# silo2D with the shipped DEM calibration (Allrun -calibrated -quick, short):
+# the calibrated law is used, every field finite and bounded
+test_silo_calibrated()
+{
+    local dir="$workRoot/siloCalibrated"
+    rm -rf "$dir"; mkdir -p "$dir"
+    cp -r "$projectDir/tutorials/silo2D/"* "$dir/"
+    "$dir/Allrun" -calibrated -quick -endTime 2 -writeInterval 1 > "$dir/log.Allrun" 2>&1 \
+        || { tail -20 "$dir/log.Allrun"; return 1; }
+    grep -E "Selecting diffusivity model calibrated" "$dir/log.segregationDegradationFoam" || { echo "calibrated model not used"; return 1; }
+    grep -E "calibrated D: powerLaw" "$dir/log.segregationDegradationFoam" || return 1
+    python3 -m sdfoam.fieldStats "$dir" bounds --tol 1e-8
+}
+
+# silo2D decomposed on 2 ranks gives the serial answer to solver tolerance
+test_silo_parallel()
+{
+    local serial="$workRoot/siloSerial" parallel="$workRoot/siloParallel"
+    local d
+    for d in "$serial" "$parallel"
+    do
+        copy_case "$projectDir/tutorials/silo2D" "$d"
+        foamDictionary -entry endTime -set 1 "$d/system/controlDict" > /dev/null
+        foamDictionary -entry writeInterval -set 1 "$d/system/controlDict" > /dev/null
+        : > "$d/system/caseParameters"
+        blockMesh -case "$d" > "$d/log.blockMesh" 2>&1 || return 1
+        cp -r "$d/0.orig" "$d/0"
+    done
+    segregationDegradationFoam -case "$serial" > "$serial/log.solver" 2>&1 || { tail -20 "$serial/log.solver"; return 1; }
+    decomposePar -case "$parallel" > "$parallel/log.decomposePar" 2>&1 || { tail -20 "$parallel/log.decomposePar"; return 1; }
+    mpirun -np 2 segregationDegradationFoam -parallel -case "$parallel" > "$parallel/log.solver" 2>&1 || { tail -20 "$parallel/log.solver"; return 1; }
+    reconstructPar -latestTime -case "$parallel" > "$parallel/log.reconstructPar" 2>&1 || return 1
+    python3 -m sdfoam.fieldStats "$parallel" compare "$serial" --tol 1e-8
+}
