@@ -9,6 +9,7 @@
 #include "granularMixture.H"
 #include "zeroGradientFvPatchFields.H"
 #include "uniformDimensionedFields.H"
+#include "modelCoeffs.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -18,61 +19,71 @@ namespace Foam
 }
 
 
-// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+// * * * * * * * * * * * * * Static Member Functions * * * * * * * * * * * //
 
-void Foam::granularMixture::readSpecies()
+Foam::List<Foam::granularSpecies> Foam::granularMixture::readSpecies
+(
+    const dictionary& granularProperties
+)
 {
-    if (!found("species") || !isDict("species"))
+    if (!granularProperties.isDict("species"))
     {
-        FatalIOErrorInFunction(*this)
-            << "Missing dictionary 'species' in " << objectPath() << nl
-            << "    e.g. species { fine { d 1e-3; rho 2500; } }" << nl
+        FatalIOErrorInFunction(granularProperties)
+            << "Missing dictionary 'species' in " << granularProperties.name()
+            << nl << "    e.g. species { fine { d 1e-3; rho 2500; } }" << nl
             << exit(FatalIOError);
     }
 
-    const dictionary& speciesDict = subDict("species");
-    names_ = speciesDict.toc();
+    // The species are the keys of the block, in the order written: unique
+    // by construction (the dictionary parser merges a repeated key)
+    const dictionary& speciesDict = granularProperties.subDict("species");
+    const wordList names(speciesDict.toc());
 
-    if (names_.empty())
+    if (names.empty())
     {
         FatalIOErrorInFunction(speciesDict)
-            << "The dictionary 'species' in " << objectPath()
+            << "The dictionary 'species' in " << granularProperties.name()
             << " declares no species: at least one is needed" << nl
             << exit(FatalIOError);
     }
 
-    d_.setSize(names_.size());
-    rho_.setSize(names_.size());
-
-    forAll(names_, i)
+    List<granularSpecies> species(names.size());
+    forAll(names, i)
     {
-        if (!speciesDict.isDict(names_[i]))
+        if (!speciesDict.isDict(names[i]))
         {
             FatalIOErrorInFunction(speciesDict)
-                << "Species entry '" << names_[i] << "' must be a dictionary"
+                << "Species entry '" << names[i] << "' must be a dictionary"
                 << " with entries d and rho" << nl << exit(FatalIOError);
         }
-        const dictionary& sd = speciesDict.subDict(names_[i]);
-        d_[i] = sd.get<scalar>("d");
-        rho_[i] = sd.get<scalar>("rho");
+        const dictionary& sd = speciesDict.subDict(names[i]);
+        modelCoeffs::checkKeys(sd, {"d", "rho"});
 
-        if (!(d_[i] > 0))
+        granularSpecies& s = species[i];
+        s.name = names[i];
+        s.d = sd.get<scalar>("d");
+        s.rho = sd.get<scalar>("rho");
+
+        if (!(s.d > 0))
         {
             FatalIOErrorInFunction(sd)
-                << "Non-positive diameter 'd " << d_[i] << "' of species '"
-                << names_[i] << "': d must be > 0 [m]" << nl
+                << "Non-positive diameter 'd " << s.d << "' of species '"
+                << s.name << "': d must be > 0 [m]" << nl
                 << exit(FatalIOError);
         }
-        if (!(rho_[i] > 0))
+        if (!(s.rho > 0))
         {
             FatalIOErrorInFunction(sd)
-                << "Non-positive density 'rho " << rho_[i] << "' of species '"
-                << names_[i] << "': rho must be > 0 [kg/m3]" << nl
+                << "Non-positive density 'rho " << s.rho << "' of species '"
+                << s.name << "': rho must be > 0 [kg/m3]" << nl
                 << exit(FatalIOError);
         }
     }
+    return species;
 }
 
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
 void Foam::granularMixture::checkInitialFields() const
 {
@@ -163,7 +174,16 @@ Foam::granularMixture::granularMixture(const fvMesh& mesh)
         nTotal_.writeOpt() = IOobject::NO_WRITE;
     }
 
-    readSpecies();
+    const List<granularSpecies> species(readSpecies(*this));
+    names_.setSize(species.size());
+    d_.setSize(species.size());
+    rho_.setSize(species.size());
+    forAll(species, i)
+    {
+        names_[i] = species[i].name;
+        d_[i] = species[i].d;
+        rho_[i] = species[i].rho;
+    }
 
     n_.setSize(names_.size());
     forAll(names_, i)

@@ -14,7 +14,7 @@ Group
 Description
     Transient solver for the segregation (and, later, degradation) of a
     granular mixture carried by a bulk flow. For every species i
-    (docs/equations.md, seed eq 4):
+    (docs/developer/equations.md, seed eq 4):
 
         ddt(n_i) + div(phi n_i) + div(J_D,i + J_S,i + J_P,i) = B_i
 
@@ -22,7 +22,9 @@ Description
     diffusivity (implicit), J_S (kinetic sieving) and J_P (percolation) as
     explicit, bounded pairwise exchange fluxes, B_i the breakage source.
     Every mechanism is a run-time selected model in
-    constant/granularProperties; `none` assembles nothing.
+    constant/granularProperties; `none` assembles nothing. The outlet
+    composition is the outletComposition function object of
+    system/controlDict (also with -postProcess).
 
 \*---------------------------------------------------------------------------*/
 
@@ -35,7 +37,6 @@ Description
 #include "percolationModel.H"
 #include "breakageModel.H"
 #include "segregationFlux.H"
-#include "outletComposition.H"
 #include "speciesAdvection.H"
 #include "wallFvPatch.H"
 
@@ -65,6 +66,12 @@ int main(int argc, char *argv[])
     while (runTime.run())
     {
         #include "readControls.H"
+
+        // Drift fluxes of the segregation mechanisms for the current state
+        // (after the previous step's solve): the segregation Courant number,
+        // and so the time step, depend on them
+        segregation.correctDrift();
+
         #include "courantNumbers.H"
         #include "setDeltaT.H"
 
@@ -74,8 +81,6 @@ int main(int argc, char *argv[])
 
         #include "updateTransport.H"
         #include "nEqns.H"
-
-        outlets.write(bulkFlow->phi());
 
         #include "writeDerivedFields.H"
 

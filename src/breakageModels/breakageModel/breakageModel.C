@@ -7,6 +7,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "breakageModel.H"
+#include "modelCoeffs.H"
 
 namespace Foam
 {
@@ -23,35 +24,8 @@ Foam::breakageModel::breakageModel
 )
 :
     mixture_(mixture),
-    coeffs_(dict.optionalSubDict(type + "Coeffs"))
+    coeffs_(modelCoeffs::coeffsDict(dict, type))
 {}
-
-
-Foam::autoPtr<Foam::breakageModel> Foam::breakageModel::New
-(
-    const dictionary& dict,
-    const granularMixture& mixture
-)
-{
-    const word modelType(dict.get<word>("model"));
-
-    Info<< "Selecting breakage model " << modelType << endl;
-
-    auto cstrIter = dictionaryConstructorTablePtr_->cfind(modelType);
-
-    if (!cstrIter.found())
-    {
-        FatalIOErrorInLookup
-        (
-            dict,
-            "breakage model",
-            modelType,
-            *dictionaryConstructorTablePtr_
-        ) << exit(FatalIOError);
-    }
-
-    return autoPtr<breakageModel>(cstrIter()(dict, mixture));
-}
 
 
 // ************************************************************************* //

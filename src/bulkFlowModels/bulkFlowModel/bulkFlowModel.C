@@ -7,6 +7,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "bulkFlowModel.H"
+#include "modelCoeffs.H"
 #include "fvc.H"
 #include "wallFvPatch.H"
 #include "calculatedFvPatchFields.H"
@@ -31,7 +32,7 @@ Foam::bulkFlowModel::bulkFlowModel
 )
 :
     mixture_(mixture),
-    coeffs_(dict.optionalSubDict(type + "Coeffs")),
+    coeffs_(modelCoeffs::coeffsDict(dict, type)),
     U_
     (
         IOobject
@@ -69,13 +70,15 @@ Foam::bulkFlowModel::bulkFlowModel
     ),
     phi_
     (
+        // Written with the results: post-processing (outletComposition
+        // with -postProcess) needs the solver's flux, not one rebuilt
         IOobject
         (
             "phi",
             mixture.mesh().time().timeName(),
             mixture.mesh(),
             IOobject::NO_READ,
-            IOobject::NO_WRITE
+            IOobject::AUTO_WRITE
         ),
         mixture.mesh(),
         dimensionedScalar("s", dimVolume/dimTime, Zero)

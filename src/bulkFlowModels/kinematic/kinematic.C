@@ -17,6 +17,7 @@
 #include "fixedValueFvPatchFields.H"
 #include "wallFvPatch.H"
 #include "mathematicalConstants.H"
+#include "modelCoeffs.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -75,16 +76,35 @@ void Foam::bulkFlowModels::kinematic::readDischargeRate()
 
     if (rateType == "given")
     {
-        Q_ = coeffs_.get<scalar>("Q");
-        fullOutletArea_ =
-            coeffs_.getOrDefault<scalar>("fullOutletArea", meshOutletArea);
+        Q_ = modelCoeffs::get(coeffs_, "Q", dimVolume/dimTime).value();
+        // Optional, default the outlet patches' area: the mesh holds the
+        // full geometry
+        fullOutletArea_ = modelCoeffs::getOrDefault
+        (
+            coeffs_,
+            "fullOutletArea",
+            dimArea,
+            meshOutletArea
+        ).value();
     }
     else if (rateType == "beverloo")
     {
         const dictionary& bev = coeffs_.subDict("beverlooCoeffs");
+        modelCoeffs::checkKeys
+        (
+            bev,
+            {"C", "k", "D0", "hopperHalfAngle", "fullOutletArea"}
+        );
+        // Optional, defaults Beverloo's C 0.58 and k 1.5 (dimensionless)
         const scalar C = bev.getOrDefault<scalar>("C", 0.58);
         const scalar k = bev.getOrDefault<scalar>("k", 1.5);
-        const scalar D0 = bev.get<scalar>("D0");
+        const scalar D0 = modelCoeffs::get(bev, "D0", dimLength).value();
+        if (!(C > 0) || !(k >= 0))
+        {
+            FatalIOErrorInFunction(bev)
+                << "Beverloo: 'C " << C << "' must be > 0 and 'k " << k
+                << "' >= 0" << nl << exit(FatalIOError);
+        }
 
         // Mean diameter of the initial mixture, weighted by solids volume
         const volScalarField dMean(mixture_.dMean());
@@ -105,17 +125,29 @@ void Foam::bulkFlowModels::kinematic::readDischargeRate()
 
         Q_ = C*sqrt(mag(mixture_.gravity()))*pow(D0 - k*d, 2.5);
 
+        // Optional, no default: without it the silo has a flat bottom and
+        // the hopper factor (tan theta)^-0.35 is left out
         if (bev.found("hopperHalfAngle"))
         {
-            const scalar theta =
-                degToRad(bev.get<scalar>("hopperHalfAngle"));
-            Q_ *= pow(tan(theta), -0.35);
+            const scalar thetaDeg = bev.get<scalar>("hopperHalfAngle");
+            if (!(thetaDeg > 0 && thetaDeg < 90))
+            {
+                FatalIOErrorInFunction(bev)
+                    << "'hopperHalfAngle " << thetaDeg << "' must lie in"
+                    << " (0, 90) [degrees from the vertical]" << nl
+                    << exit(FatalIOError);
+            }
+            Q_ *= pow(tan(degToRad(thetaDeg)), -0.35);
         }
-        fullOutletArea_ = bev.getOrDefault<scalar>
+        // Optional, default the area of a circular outlet pi D0^2/4 (the
+        // full geometry of an axisymmetric silo)
+        fullOutletArea_ = modelCoeffs::getOrDefault
         (
+            bev,
             "fullOutletArea",
+            dimArea,
             constant::mathematical::pi*sqr(D0)/4
-        );
+        ).value();
         Info<< "    Beverloo discharge rate Q = " << Q_
             << " m3/s (bulk volume, full outlet), mean d = " << d << nl;
     }
@@ -336,8 +368,22 @@ Foam::bulkFlowModels::kinematic::kinematic
     const granularMixture& mixture
 )
 :
-    bulkFlowModel(typeName, dict, mixture, false),
-    B_(coeffs_.get<scalar>("B")),
+    bulkFlowModel
+    (
+        typeName,
+        modelCoeffs::checked
+        (
+            dict,
+            typeName,
+            {
+                "B", "outletPatches", "dischargeRate", "Q",
+                "fullOutletArea", "beverlooCoeffs"
+            }
+        ),
+        mixture,
+        false
+    ),
+    B_(modelCoeffs::get(coeffs_, "B", dimLength).value()),
     outletPatches_(),
     Q_(0),
     fullOutletArea_(0)

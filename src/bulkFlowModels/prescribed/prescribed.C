@@ -8,6 +8,7 @@
 
 #include "prescribed.H"
 #include "addToRunTimeSelectionTable.H"
+#include "modelCoeffs.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -29,9 +30,16 @@ Foam::bulkFlowModels::prescribed::prescribed
     const granularMixture& mixture
 )
 :
-    bulkFlowModel(typeName, dict, mixture, true),
+    bulkFlowModel
+    (
+        typeName,
+        modelCoeffs::checked(dict, typeName, {"scale"}),
+        mixture,
+        true
+    ),
     U0_("U0", U_)
 {
+    // Optional, no default: without it U stays as read from 0/U
     if (coeffs_.found("scale"))
     {
         scale_ = Function1<scalar>::New("scale", coeffs_);

@@ -8,6 +8,7 @@
 
 #include "calibratedLaw.H"
 #include "zeroGradientFvPatchFields.H"
+#include "numberText.H"
 
 #include <cstdio>
 #include <string>
@@ -33,14 +34,6 @@ Foam::calibratedLaw::modeNames
 namespace
 {
 
-const Foam::HashTable<Foam::wordList> lawParameters
-({
-    {"powerLaw", Foam::wordList({"A", "a", "m", "b"})},
-    {"kineticTheoryGroups", Foam::wordList({"C", "alpha"})},
-    {"sievingPowerLaw", Foam::wordList({"E", "p", "beta"})},
-    {"sievingCompositionPowerLaw", Foam::wordList({"E", "p", "q"})}
-});
-
 Foam::Tuple2<Foam::scalar, Foam::scalar> readRange
 (
     const Foam::dictionary& dict,
@@ -58,17 +51,11 @@ Foam::Tuple2<Foam::scalar, Foam::scalar> readRange
 }
 
 //- Six significant digits in messages, whatever the stream's precision
-//  (writePrecision of controlDict sets it)
-std::string fmt6(const Foam::scalar v)
-{
-    char buf[32];
-    std::snprintf(buf, sizeof(buf), "%.6g", v);
-    return buf;
-}
+using Foam::numberText::fmt;
 
 std::string fmt6(const Foam::Tuple2<Foam::scalar, Foam::scalar>& range)
 {
-    return "(" + fmt6(range.first()) + " " + fmt6(range.second()) + ")";
+    return "(" + fmt(range.first()) + " " + fmt(range.second()) + ")";
 }
 
 
@@ -100,7 +87,8 @@ Foam::calibratedLaw::calibratedLaw
 :
     coefficient_(coefficient),
     law_(),
-    params_(),
+    fitted_(),
+    parameters_(),
     policy_
     (
         outsidePolicyNames.getOrDefault
@@ -109,8 +97,7 @@ Foam::calibratedLaw::calibratedLaw
             modelDict,
             outsidePolicy::clamp
         )
-    ),
-    diameterPower_(1)
+    )
 {}
 
 
@@ -181,34 +168,55 @@ void Foam::calibratedLaw::readLaw(const dictionary& coeffsDict)
     const dictionary& dict = coeffsDict.subDict(coefficient);
 
     law_ = dict.get<word>("law");
-    if (!lawParameters.found(law_))
+
+    // The fixed power k of d of the sieving laws: an integer, as the fit
+    // wrote it
+    const scalar diameterPower = dict.getOrDefault<scalar>("diameterPower", 1);
+    if (diameterPower != std::round(diameterPower))
     {
         FatalIOErrorInFunction(dict)
-            << "Unknown law '" << law_ << "' for " << coefficient
-            << "; valid: " << lawParameters.sortedToc() << nl
-            << exit(FatalIOError);
+            << "Entry 'diameterPower " << diameterPower << "' of "
+            << coefficient << " must be an integer (the power k of d in"
+            << " E d^k ...)" << nl << exit(FatalIOError);
     }
-    for (const word& p : lawParameters[law_])
+    try
     {
-        const scalar v = dict.get<scalar>(p);
+        fitted_.emplace(sdf::fit::lawFromName(law_, int(diameterPower)));
+    }
+    catch (const std::invalid_argument&)
+    {
+        wordList valid;
+        for (const std::string& name : sdf::fit::lawNames())
+        {
+            valid.append(name);
+        }
+        FatalIOErrorInFunction(dict)
+            << "Unknown law '" << law_ << "' for " << coefficient
+            << "; valid: " << valid << nl << exit(FatalIOError);
+    }
+
+    const std::vector<std::string> names(fitted_->parameterNames());
+    parameters_.resize(label(names.size()));
+    for (std::size_t i = 0; i < names.size(); ++i)
+    {
+        const scalar v = dict.get<scalar>(names[i]);
         if (!std::isfinite(v))
         {
             FatalIOErrorInFunction(dict)
-                << "Parameter '" << p << "' of " << coefficient
+                << "Parameter '" << names[i].c_str() << "' of " << coefficient
                 << " is not finite" << nl << exit(FatalIOError);
         }
-        params_.set(p, v);
+        parameters_(i) = v;
     }
-    diameterPower_ = dict.getOrDefault<scalar>("diameterPower", 1);
 
     phiRange_ = readRange(dict, "phiRange");
     xRange_ = readRange(dict, "xRange");
     TRange_ = readRange(dict, "TRange");
 
     Info<< "    calibrated " << coefficient << ": " << law_;
-    for (const word& p : lawParameters[law_])
+    for (std::size_t i = 0; i < names.size(); ++i)
     {
-        Info<< ' ' << p << " = " << params_[p];
+        Info<< ' ' << names[i].c_str() << " = " << parameters_(i);
     }
     Info<< ", outside the envelope: " << outsidePolicyNames[policy_] << nl;
 }
@@ -249,34 +257,20 @@ Foam::scalar Foam::calibratedLaw::value
         return table_->value(phi, x, T);
     }
 
-    const scalar T1 = max(T, scalar(0))/3;
+    // No agitation, no transport: every law vanishes with T (and the
+    // power law's T^m must not be evaluated at T = 0 for m < 0)
+    if (!(T > VSMALL))
+    {
+        return 0;
+    }
 
-    if (law_ == "powerLaw")
-    {
-        if (!(T > VSMALL))
-        {
-            return 0;
-        }
-        return
-            param("A")*pow(1 + x, param("a"))*pow(T, param("m"))
-           *pow(phi, param("b"));
-    }
-    if (law_ == "kineticTheoryGroups")
-    {
-        const scalar g0 = (1 - phi/2)/pow3(1 - phi);
-        return param("C")*d*sqrt(T1)*(1 + param("alpha")*x)/(phi*g0);
-    }
-    if (law_ == "sievingCompositionPowerLaw")
-    {
-        // x^q vanishes with the coarse (x = 0 gives 0 for q > 0)
-        return
-            param("E")*pow(d, diameterPower_)*sqrt(T1)*pow(phi, param("p"))
-           *pow(max(x, scalar(0)), param("q"));
-    }
-    // sievingPowerLaw
-    return
-        param("E")*pow(d, diameterPower_)*sqrt(T1)*pow(phi, param("p"))
-       *(1 + param("beta")*x);
+    // x is a fraction: round-off below 0 must not reach x^q
+    sdf::fit::Condition c;
+    c.phi = phi;
+    c.x = max(x, scalar(0));
+    c.T = T;
+    c.d = d;
+    return fitted_->evaluate(c, parameters_);
 }
 
 
@@ -386,9 +380,9 @@ Foam::tmp<Foam::volScalarField> Foam::calibratedLaw::evaluate
                     << "Cell " << celli << " (centre "
                     << mixture.mesh().C()[celli] << ") is outside the"
                     << " envelope of the calibrated " << coefficient_
-                    << ": phi " << fmt6(p).c_str() << " in " << fmt6(phiRange).c_str()
-                    << ", x " << fmt6(xc).c_str() << " in " << fmt6(xRange).c_str()
-                    << ", T " << fmt6(Tc).c_str() << " in " << fmt6(TRange).c_str() << nl
+                    << ": phi " << fmt(p).c_str() << " in " << fmt6(phiRange).c_str()
+                    << ", x " << fmt(xc).c_str() << " in " << fmt6(xRange).c_str()
+                    << ", T " << fmt(Tc).c_str() << " in " << fmt6(TRange).c_str() << nl
                     << "    (outsideEnvelope error; use clamp or extrapolate,"
                     << " or widen the calibration)" << nl << exit(FatalError);
             }

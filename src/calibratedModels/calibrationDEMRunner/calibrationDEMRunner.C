@@ -11,10 +11,9 @@
 #include "OSspecific.H"
 #include "Pstream.H"
 
-#include "demDictionary.H"
 #include "calibrationStore.H"
-#include "CellRun.hpp"
-#include "io/Hdf5File.hpp"
+#include "numberText.H"
+#include "store/Store.hpp"
 
 #include <cfenv>
 #include <chrono>
@@ -32,21 +31,11 @@ namespace
 const Foam::scalar xLowest = 0.02;
 const Foam::scalar xHighest = 0.98;
 
-std::string fmt(const double v)
-{
-    char buf[64];
-    std::snprintf(buf, sizeof(buf), "%.6g", v);
-    return buf;
-}
+using Foam::numberText::fmt;
 
 std::string fmtList(const Foam::scalarList& values)
 {
-    std::string text("(");
-    for (const Foam::scalar v : values)
-    {
-        text += (text.size() > 1 ? " " : "") + fmt(v);
-    }
-    return text + ")";
+    return Foam::numberText::listText(values);
 }
 
 
@@ -94,11 +83,7 @@ Foam::calibrationDEMRunner::calibrationDEMRunner
 )
 :
     file_(table.file()),
-    fineName_(table.fineSpecies()),
-    coarseName_(table.coarseSpecies()),
-    base_(new sdf::dem::CellRunSettings()),
-    replicas_(),
-    settingsKey_(),
+    settings_(),
     margin_(modelDict.getOrDefault<scalar>("runDEMMargin", 1)),
     maxPhi_(modelDict.getOrDefault<scalar>("runDEMMaxPhi", 0.6)),
     minT_(modelDict.getOrDefault<scalar>("runDEMMinT", 1e-4)),
@@ -112,6 +97,19 @@ Foam::calibrationDEMRunner::calibrationDEMRunner
             << "runDEM limits: runDEMMargin " << margin_ << " must be >= 0,"
             << " runDEMMaxPhi " << maxPhi_ << " in (0, 0.64) (jamming),"
             << " runDEMMinT " << minT_ << " > 0 [m2/s2]" << nl
+            << exit(FatalIOError);
+    }
+
+    const word& fineName = table.fineSpecies();
+    const word& coarseName = table.coarseSpecies();
+    const label finei = mixture.names().find(fineName);
+    const label coarsei = mixture.names().find(coarseName);
+    if (mixture.size() != 2 || !(mixture.d(coarsei) > mixture.d(finei)))
+    {
+        FatalIOErrorInFunction(modelDict)
+            << "outsideEnvelope runDEM runs binary mixtures whose coarse"
+            << " species (" << coarseName << ") is larger than the fine ("
+            << fineName << "); the mixture has " << mixture.names() << nl
             << exit(FatalIOError);
     }
 
@@ -129,62 +127,20 @@ Foam::calibrationDEMRunner::calibrationDEMRunner
             false
         )
     );
-
-    const label finei = mixture.names().find(fineName_);
-    const label coarsei = mixture.names().find(coarseName_);
-    if (mixture.size() != 2 || !(mixture.d(coarsei) > mixture.d(finei)))
-    {
-        FatalIOErrorInFunction(modelDict)
-            << "outsideEnvelope runDEM runs binary mixtures whose coarse"
-            << " species (" << coarseName_ << ") is larger than the fine ("
-            << fineName_ << "); the mixture has " << mixture.names() << nl
-            << exit(FatalIOError);
-    }
-
-    sdf::dem::CellRunSettings& b = *base_;
-    b.species =
-    {
-        {fineName_, mixture.d(finei), mixture.rho(finei)},
-        {coarseName_, mixture.d(coarsei), mixture.rho(coarsei)}
-    };
-    b.particles = dict.getOrDefault<label>("particles", 1000);
-    const word mode(dict.getOrDefault<word>("mode", "thermostatted"));
-    if (mode != "thermostatted")
-    {
-        FatalIOErrorInFunction(dict)
-            << "Entry 'mode' " << mode << ": runDEM runs driven cells only"
-            << " (mode thermostatted)" << nl << exit(FatalIOError);
-    }
-    b.simulation.mode = sdf::dem::cellModeFromName(mode);
-    demDictionary::readRunControls(dict, b);
-    b.progressEvery = 0;
-
-    replicas_ = dict.getOrDefault<labelList>("replicas", labelList({1}));
-    if (replicas_.empty())
-    {
-        FatalIOErrorInFunction(dict)
-            << "Entry 'replicas' (DEM seeds) is empty" << nl
-            << exit(FatalIOError);
-    }
-
-    // Fingerprint of the DEM settings, as calibrateGranularMixture's: each
-    // recognises the other's stored conditions
-    settingsKey_ = calibrationStore::settingsKey
-    (
-        b,
-        dict.subOrEmptyDict("contact")
-            .getOrDefault<word>("model", "linearSpringDashpot")
-    );
+    granularSpecies fine, coarse;
+    fine.name = fineName;
+    fine.d = mixture.d(finei);
+    fine.rho = mixture.rho(finei);
+    coarse.name = coarseName;
+    coarse.d = mixture.d(coarsei);
+    coarse.rho = mixture.rho(coarsei);
+    settings_.reset(new calibrationSettings(dict, fine, coarse));
 
     Info<< "    calibrated: outside the grid, runDEM with the DEM settings of "
-        << dict.objectPath() << " (" << b.particles << " particles, sampling "
-        << b.samplingTime << " s, " << replicas_.size() << " replicas)"
-        << nl;
+        << dict.objectPath() << " (" << settings_->base().particles
+        << " particles, sampling " << settings_->base().samplingTime << " s, "
+        << settings_->replicas().size() << " replicas)" << nl;
 }
-
-
-Foam::calibrationDEMRunner::~calibrationDEMRunner()
-{}
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
@@ -196,50 +152,29 @@ Foam::label Foam::calibrationDEMRunner::runCondition
     const scalar T
 )
 {
+    const calibrationSettings& settings = *settings_;
+    const std::map<std::string, std::string> stored =
+        calibrationStore::storedConditions(file_);
+
     label ran = 0;
-    for (const label seed : replicas_)
+    for (const label seed : settings.replicas())
     {
-        const std::string name =
-            calibrationStore::conditionName(phi, x, T, seed);
+        const std::string name = sdf::store::conditionName(phi, x, T, seed);
 
         // Stored already (by the utility or another calibrated model)?
-        if (isFile(file_))
+        if
+        (
+            calibrationStore::isStored
+            (
+                file_, stored, name, settings.settingsKey()
+            )
+        )
         {
-            try
-            {
-                sdf::io::File f = sdf::io::File::openReadOnly(file_);
-                const sdf::io::Group root = f.root();
-                if (root.hasGroup("conditions/" + name))
-                {
-                    const std::string storedKey =
-                        root.openGroup("conditions/" + name)
-                        .readString("settingsKey");
-                    if (storedKey != settingsKey_)
-                    {
-                        FatalErrorInFunction
-                            << "Condition " << name.c_str() << " in "
-                            << file_ << " was run with other DEM settings:"
-                            << nl << "    stored:  " << storedKey.c_str()
-                            << nl << "    current: " << settingsKey_.c_str()
-                            << nl << exit(FatalError);
-                    }
-                    continue;
-                }
-            }
-            catch (const std::exception& err)
-            {
-                FatalErrorInFunction
-                    << "Cannot read " << file_ << ": " << err.what() << nl
-                    << exit(FatalError);
-            }
+            continue;
         }
 
-        sdf::dem::CellRunSettings s = *base_;
-        s.volumeFractions = {1 - x, x};
-        s.solidsFraction = phi;
-        s.simulation.targetTemperature = T;
-        s.seed = seed;
-        s.label = name;
+        const sdf::dem::CellRunSettings s =
+            settings.conditionSettings(phi, x, T, seed, name);
 
         const auto t0 = std::chrono::steady_clock::now();
         sdf::dem::CellRunResult r;
@@ -260,12 +195,12 @@ Foam::label Foam::calibrationDEMRunner::runCondition
         // condition
         try
         {
-            calibrationStore::storeCondition
+            sdf::store::appendCondition
             (
                 file_,
-                fineName_,
-                coarseName_,
-                settingsKey_,
+                settings.fine().name,
+                settings.coarse().name,
+                settings.settingsKey(),
                 {name, phi, x, T, seed},
                 r
             );
@@ -287,7 +222,8 @@ Foam::label Foam::calibrationDEMRunner::runCondition
         secondsRun_ += seconds;
         Info<< "    runDEM: " << name.c_str() << " done in "
             << fmt(seconds).c_str() << " s (T = "
-            << fmt(r.temperature).c_str() << ", D_" << fineName_ << " = "
+            << fmt(r.temperature).c_str() << ", D_"
+            << settings.fine().name << " = "
             << fmt(r.species[0].greenKubo.integral.value).c_str()
             << " m2/s)" << endl;
     }
@@ -430,7 +366,8 @@ bool Foam::calibrationDEMRunner::extend
         << "    new grid values: phi " << fmtList(newPhi).c_str()
         << ", x " << fmtList(newX).c_str() << ", T " << fmtList(newT).c_str()
         << ": " << conditions.size()
-        << " conditions x " << replicas_.size() << " replicas" << endl;
+        << " conditions x " << settings_->replicas().size() << " replicas"
+        << endl;
 
     const auto start = std::chrono::steady_clock::now();
     label ran = 0;

@@ -7,9 +7,9 @@
 \*---------------------------------------------------------------------------*/
 
 #include "calibrationTable.H"
-#include "calibrationStore.H"
+#include "numberText.H"
 
-#include "io/Hdf5File.hpp"
+#include "store/Store.hpp"
 #include "fit/SievingNormalisation.hpp"
 
 #include <cmath>
@@ -70,12 +70,7 @@ Foam::label indexOf(const Foam::scalarList& axis, const Foam::scalar v)
 }
 
 
-std::string fmt(const double v)
-{
-    char buf[64];
-    std::snprintf(buf, sizeof(buf), "%.6g", v);
-    return buf;
-}
+using Foam::numberText::fmt;
 
 
 //- One stored condition (one replica)
@@ -174,61 +169,68 @@ void Foam::calibrationTable::read()
 
     try
     {
-        sdf::io::File f = sdf::io::File::openReadOnly(file_);
-        const sdf::io::Group root = f.root();
-        calibrationStore::checkIsStore(root);
-        fineName_ = root.readString("fineSpecies");
-        coarseName_ = root.readString("coarseSpecies");
+        const sdf::store::StoreContents contents = sdf::store::readStore(file_);
+        fineName_ = contents.fineSpecies;
+        coarseName_ = contents.coarseSpecies;
 
-        if (root.hasGroup("conditions"))
+        for (const sdf::store::ConditionRecord& record : contents.conditions)
         {
-            const sdf::io::Group conditions = root.openGroup("conditions");
-            for (const std::string& name : conditions.childNames())
+            storedCondition c;
+            c.name = record.name;
+            c.phi = record.phi;
+            c.x = record.x;
+            c.targetT = record.targetT;
+            c.T = record.T;
+            if (isD)
             {
-                const sdf::io::Group g = conditions.openGroup(name);
-                storedCondition c;
-                c.name = name;
-                c.phi = g.readDouble("phi");
-                c.x = g.readDouble("x");
-                c.targetT = g.readDouble("targetT");
-                c.T = g.readDouble("T");
-                if (isD)
-                {
-                    c.value =
-                        g.openGroup("species/" + fineName_).readDouble("D");
-                }
-                else
-                {
-                    const double etaEngine =
-                        g.openGroup("species/" + coarseName_)
-                        .readDouble("eta");
-                    // Before the species are known the value is not used
-                    c.value =
-                        haveSpecies
-                      ? sdf::fit::kinematicSievingCoefficient
-                        (
-                            etaEngine, c.phi, c.x, c.T,
-                            {dFine_, rhoFine_},
-                            {dCoarse_, rhoCoarse_}
-                        )
-                      : etaEngine;
-                }
-                if
-                (
-                    !std::isfinite(c.phi) || !std::isfinite(c.x)
-                 || !std::isfinite(c.targetT) || !std::isfinite(c.value)
-                 || !(c.phi > 0) || !(c.targetT > 0)
-                )
+                c.value = record.fine.D;
+            }
+            else
+            {
+                if (!record.coarse.eta)
                 {
                     throw std::runtime_error
                     (
-                        "condition " + name + " has a non-finite or"
-                        " non-positive phi, targetT or " + coefficient_
+                        "condition " + record.name + " has no kinetic sieving"
+                        " coefficient eta of the coarse species "
+                      + coarseName_
                     );
                 }
-                stored.push_back(c);
+                const double etaEngine = *record.coarse.eta;
+                // Before the species are known the value is not used
+                c.value =
+                    haveSpecies
+                  ? sdf::fit::kinematicSievingCoefficient
+                    (
+                        etaEngine, c.phi, c.x, c.T,
+                        {dFine_, rhoFine_},
+                        {dCoarse_, rhoCoarse_}
+                    )
+                  : etaEngine;
             }
+            if
+            (
+                !std::isfinite(c.phi) || !std::isfinite(c.x)
+             || !std::isfinite(c.targetT) || !std::isfinite(c.value)
+             || !(c.phi > 0) || !(c.targetT > 0)
+            )
+            {
+                throw std::runtime_error
+                (
+                    "condition " + c.name + " has a non-finite or"
+                    " non-positive phi, targetT or " + coefficient_
+                );
+            }
+            stored.push_back(c);
         }
+    }
+    catch (const sdf::store::StoreError& err)
+    {
+        FatalIOErrorInFunction(dict_)
+            << "Cannot use " << file_ << " as the calibration table of "
+            << coefficient_ << ":" << nl << "    " << err.message().c_str() << nl
+            << "    (calibrationFile: a constant/calibration.h5 written by"
+            << " calibrateGranularMixture)" << nl << exit(FatalIOError);
     }
     catch (const std::exception& err)
     {

@@ -7,108 +7,309 @@
 \*---------------------------------------------------------------------------*/
 
 #include "outletComposition.H"
-#include "Time.H"
+#include "granularMixture.H"
+#include "volFields.H"
+#include "surfaceFields.H"
 #include "OSspecific.H"
+#include "addToRunTimeSelectionTable.H"
 
-Foam::outletComposition::outletComposition(const granularMixture& mixture)
-:
-    mixture_(mixture)
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+namespace Foam
 {
-    const fvMesh& mesh = mixture.mesh();
+namespace functionObjects
+{
+    defineTypeNameAndDebug(outletComposition, 0);
+    addToRunTimeSelectionTable(functionObject, outletComposition, dictionary);
+}
+}
 
-    DynamicList<label> patches;
-    forAll(mesh.boundary(), patchi)
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+Foam::tmp<Foam::volScalarField>
+Foam::functionObjects::outletComposition::speciesField(const word& name) const
+{
+    const volScalarField* registered =
+        mesh_.findObject<volScalarField>(name);
+    if (registered)
     {
-        const fvPatch& p = mesh.boundary()[patchi];
-        if (!p.coupled() && p.type() == "patch")
+        return tmp<volScalarField>(*registered);
+    }
+    return tmp<volScalarField>::New
+    (
+        IOobject
+        (
+            name,
+            time_.timeName(),
+            mesh_,
+            IOobject::MUST_READ,
+            IOobject::NO_WRITE,
+            false
+        ),
+        mesh_
+    );
+}
+
+
+Foam::tmp<Foam::surfaceScalarField>
+Foam::functionObjects::outletComposition::flux() const
+{
+    if (postProcess)
+    {
+        IOobject phiHeader
+        (
+            phiName_,
+            time_.timeName(),
+            mesh_,
+            IOobject::MUST_READ,
+            IOobject::NO_WRITE,
+            false
+        );
+        if (phiHeader.typeHeaderOk<surfaceScalarField>(true))
         {
-            patches.append(patchi);
+            return tmp<surfaceScalarField>::New(phiHeader, mesh_);
         }
     }
-    patches_.transfer(patches);
 
-    cumulative_.setSize(patches_.size(), scalarList(mixture.size(), Zero));
-
-    if (Pstream::master())
+    const surfaceScalarField* registered =
+        mesh_.findObject<surfaceScalarField>(phiName_);
+    if (!registered)
     {
-        const fileName dir
-        (
-            mesh.time().globalPath()/"postProcessing"/"outletComposition"
-           /mesh.time().timeName()
-        );
-        mkDir(dir);
-        files_.setSize(patches_.size());
-        forAll(patches_, pi)
+        FatalErrorInFunction
+            << "Function object " << name() << ": no face flux '"
+            << phiName_ << "' at time " << time_.timeName()
+            << " (registered or written in the time directory)" << nl
+            << exit(FatalError);
+    }
+    return tmp<surfaceScalarField>(*registered);
+}
+
+
+void Foam::functionObjects::outletComposition::createFiles()
+{
+    files_.clear();
+    if (!Pstream::master())
+    {
+        return;
+    }
+
+    const fileName dir
+    (
+        time_.globalPath()/functionObject::outputPrefix/name()
+       /time_.timeName()
+    );
+    mkDir(dir);
+
+    files_.setSize(patches_.size());
+    forAll(patches_, pi)
+    {
+        const word& patchName = mesh_.boundary()[patches_[pi]].name();
+
+        // Post-processing keeps the run's file: <patch>_<time>.dat beside
+        // it, as OpenFOAM's writeFile does
+        fileName path(dir/patchName + ".dat");
+        if (postProcess && isFile(path))
         {
-            files_.set
-            (
-                pi,
-                new OFstream(dir/mesh.boundary()[patches_[pi]].name() + ".dat")
-            );
-            OFstream& os = files_[pi];
-            os.precision(10);
-            os  << "# Flow through patch " << mesh.boundary()[patches_[pi]].name()
-                << " (positive leaving the domain)" << nl
-                << "# time[s] Q[m3/s] massFlow[kg/s]";
-            for (const word& s : mixture.names())
-            {
-                os << " massFlow." << s << "[kg/s]";
-            }
-            for (const word& s : mixture.names())
-            {
-                os << " massFraction." << s;
-            }
-            for (const word& s : mixture.names())
-            {
-                os << " cumulativeMass." << s << "[kg]";
-            }
-            os << endl;
+            path = dir/patchName + "_" + time_.timeName() + ".dat";
         }
+        files_.set(pi, new OFstream(path));
+
+        OFstream& os = files_[pi];
+        os.precision(10);
+        os  << "# Flow through patch " << patchName
+            << " (positive leaving the domain)" << nl
+            << "# time[s] Q[m3/s] massFlow[kg/s]";
+        for (const granularSpecies& s : species_)
+        {
+            os << " massFlow." << s.name << "[kg/s]";
+        }
+        for (const granularSpecies& s : species_)
+        {
+            os << " massFraction." << s.name;
+        }
+        for (const granularSpecies& s : species_)
+        {
+            os << " cumulativeMass." << s.name << "[kg]";
+        }
+        os << endl;
     }
 }
 
 
-void Foam::outletComposition::write(const surfaceScalarField& phi)
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::functionObjects::outletComposition::outletComposition
+(
+    const word& name,
+    const Time& runTime,
+    const dictionary& dict
+)
+:
+    fvMeshFunctionObject(name, runTime, dict),
+    species_(),
+    phiName_("phi"),
+    patches_(),
+    files_(),
+    flows_(),
+    cumulative_(),
+    previousTime_(runTime.value())
 {
-    const scalar t = mixture_.mesh().time().value();
-    const scalar dt = mixture_.mesh().time().deltaTValue();
+    // The species of the running solver's mixture, else of the case's
+    // constant/granularProperties (post-processing)
+    const granularMixture* mixture =
+        mesh_.findObject<granularMixture>("granularProperties");
+    if (mixture)
+    {
+        species_ = granularMixture::readSpecies(*mixture);
+    }
+    else
+    {
+        const IOdictionary granularProperties
+        (
+            IOobject
+            (
+                "granularProperties",
+                runTime.constant(),
+                mesh_,
+                IOobject::MUST_READ,
+                IOobject::NO_WRITE,
+                false
+            )
+        );
+        species_ = granularMixture::readSpecies(granularProperties);
+    }
+
+    read(dict);
+
+    // Optional, default every open patch: non-coupled, generic type `patch`
+    if (dict.found("patches"))
+    {
+        const wordRes patchNames(dict.get<wordRes>("patches"));
+        patches_ = mesh_.boundaryMesh().patchSet(patchNames).sortedToc();
+        if (patches_.empty())
+        {
+            FatalIOErrorInFunction(dict)
+                << "Function object " << name << ": 'patches' "
+                << patchNames << " match no patch; patches: "
+                << mesh_.boundaryMesh().names() << nl << exit(FatalIOError);
+        }
+    }
+    else
+    {
+        DynamicList<label> patches;
+        forAll(mesh_.boundary(), patchi)
+        {
+            const fvPatch& p = mesh_.boundary()[patchi];
+            if (!p.coupled() && p.type() == "patch")
+            {
+                patches.append(patchi);
+            }
+        }
+        patches_.transfer(patches);
+    }
+
+    flows_.setSize(patches_.size(), scalarList(species_.size() + 1, Zero));
+    cumulative_.setSize(patches_.size(), scalarList(species_.size(), Zero));
+
+    // Files in the directory of the run's start time; when post-processing
+    // in that of the first time processed (created there)
+    if (!postProcess)
+    {
+        createFiles();
+    }
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+bool Foam::functionObjects::outletComposition::read(const dictionary& dict)
+{
+    fvMeshFunctionObject::read(dict);
+
+    // Optional, default phi (the solver's bulk flux)
+    phiName_ = dict.getOrDefault<word>("phi", "phi");
+
+    return true;
+}
+
+
+bool Foam::functionObjects::outletComposition::execute()
+{
+    const tmp<surfaceScalarField> tphi(flux());
+    const surfaceScalarField& phi = tphi();
+
+    List<tmp<volScalarField>> n(species_.size());
+    forAll(species_, k)
+    {
+        n[k] = speciesField("n." + species_[k].name);
+    }
+
+    // The solver's time step; between the processed times afterwards
+    const scalar dt =
+        postProcess
+      ? time_.value() - previousTime_
+      : time_.deltaTValue();
+    previousTime_ = time_.value();
 
     forAll(patches_, pi)
     {
         const label patchi = patches_[pi];
         const scalarField& phip = phi.boundaryField()[patchi];
 
-        const scalar Q = gSum(phip);
-        scalarList massFlow(mixture_.size());
-        scalar total = 0;
-        forAll(massFlow, k)
+        scalarList& flows = flows_[pi];
+        flows[0] = gSum(phip);
+        forAll(species_, k)
         {
-            massFlow[k] =
-                mixture_.rho(k)
-               *gSum(phip*mixture_.n()[k].boundaryField()[patchi]);
-            total += massFlow[k];
-            cumulative_[pi][k] += massFlow[k]*dt;
-        }
-
-        if (Pstream::master())
-        {
-            OFstream& os = files_[pi];
-            os  << t << ' ' << Q << ' ' << total;
-            forAll(massFlow, k)
-            {
-                os << ' ' << massFlow[k];
-            }
-            forAll(massFlow, k)
-            {
-                os << ' ' << (mag(total) > VSMALL ? massFlow[k]/total : 0);
-            }
-            forAll(massFlow, k)
-            {
-                os << ' ' << cumulative_[pi][k];
-            }
-            os << endl;
+            const scalar massFlow =
+                species_[k].rho*gSum(phip*n[k]().boundaryField()[patchi]);
+            flows[k + 1] = massFlow;
+            cumulative_[pi][k] += massFlow*dt;
         }
     }
+
+    return true;
+}
+
+
+bool Foam::functionObjects::outletComposition::write()
+{
+    if (!Pstream::master())
+    {
+        return true;
+    }
+    if (files_.empty() && !patches_.empty())
+    {
+        createFiles();
+    }
+
+    forAll(patches_, pi)
+    {
+        const scalarList& flows = flows_[pi];
+        scalar total = 0;
+        forAll(species_, k)
+        {
+            total += flows[k + 1];
+        }
+
+        OFstream& os = files_[pi];
+        os  << time_.value() << ' ' << flows[0] << ' ' << total;
+        forAll(species_, k)
+        {
+            os << ' ' << flows[k + 1];
+        }
+        forAll(species_, k)
+        {
+            os << ' ' << (mag(total) > VSMALL ? flows[k + 1]/total : 0);
+        }
+        forAll(species_, k)
+        {
+            os << ' ' << cumulative_[pi][k];
+        }
+        os << endl;
+    }
+
+    return true;
 }
 
 

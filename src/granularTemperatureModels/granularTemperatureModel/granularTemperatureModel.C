@@ -7,6 +7,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "granularTemperatureModel.H"
+#include "modelCoeffs.H"
 #include "zeroGradientFvPatchFields.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
@@ -28,7 +29,7 @@ Foam::granularTemperatureModel::granularTemperatureModel
 )
 :
     mixture_(mixture),
-    coeffs_(dict.optionalSubDict(type + "Coeffs")),
+    coeffs_(modelCoeffs::coeffsDict(dict, type)),
     T_
     (
         IOobject

@@ -8,6 +8,7 @@
 
 #include "savageJeffrey.H"
 #include "addToRunTimeSelectionTable.H"
+#include "modelCoeffs.H"
 
 namespace Foam
 {
@@ -30,7 +31,12 @@ Foam::granularTemperatureModels::savageJeffrey::savageJeffrey
     const granularMixture& mixture
 )
 :
-    granularTemperatureModel(typeName, dict, mixture),
+    granularTemperatureModel
+    (
+        typeName,
+        modelCoeffs::checked(dict, typeName, {"R"}),
+        mixture
+    ),
     R_(coeffs_.get<scalar>("R"))
 {
     if (!(R_ > 0))

@@ -9,7 +9,7 @@
 #include "constantDiffusivity.H"
 #include "addToRunTimeSelectionTable.H"
 #include "zeroGradientFvPatchFields.H"
-#include "mathematicalConstants.H"
+#include "modelCoeffs.H"
 
 namespace Foam
 {
@@ -27,8 +27,13 @@ Foam::diffusivityModels::constantDiffusivity::constantDiffusivity
     const granularMixture& mixture
 )
 :
-    diffusivityModel(typeName, dict, mixture),
-    D0_(coeffs_.get<scalar>("D"))
+    diffusivityModel
+    (
+        typeName,
+        modelCoeffs::checked(dict, typeName, {"D"}),
+        mixture
+    ),
+    D0_(modelCoeffs::get(coeffs_, "D", dimArea/dimTime).value())
 {
     if (!(D0_ >= 0))
     {

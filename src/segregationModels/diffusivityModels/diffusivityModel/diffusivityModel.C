@@ -7,6 +7,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "diffusivityModel.H"
+#include "modelCoeffs.H"
 #include "zeroGradientFvPatchFields.H"
 #include "wallFvPatch.H"
 
@@ -25,7 +26,7 @@ Foam::diffusivityModel::diffusivityModel
 )
 :
     mixture_(mixture),
-    coeffs_(dict.optionalSubDict(type + "Coeffs"))
+    coeffs_(modelCoeffs::coeffsDict(dict, type))
 {}
 
 

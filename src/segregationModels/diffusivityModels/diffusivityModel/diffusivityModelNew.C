@@ -7,6 +7,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "diffusivityModel.H"
+#include "modelCoeffs.H"
 
 Foam::autoPtr<Foam::diffusivityModel> Foam::diffusivityModel::New
 (
@@ -28,7 +29,8 @@ Foam::autoPtr<Foam::diffusivityModel> Foam::diffusivityModel::New
             "diffusivity model",
             modelType,
             *dictionaryConstructorTablePtr_
-        ) << exit(FatalIOError);
+        )   << modelCoeffs::libraryHint(modelType)
+            << exit(FatalIOError);
     }
 
     return autoPtr<diffusivityModel>(cstrIter()(dict, mixture));

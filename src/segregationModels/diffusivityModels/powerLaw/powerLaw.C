@@ -10,6 +10,8 @@
 #include "addToRunTimeSelectionTable.H"
 #include "zeroGradientFvPatchFields.H"
 #include "mathematicalConstants.H"
+#include "LawFormulas.hpp"
+#include "modelCoeffs.H"
 
 namespace Foam
 {
@@ -27,12 +29,28 @@ Foam::diffusivityModels::powerLaw::powerLaw
     const granularMixture& mixture
 )
 :
-    diffusivityModel(typeName, dict, mixture),
-    A_(coeffs_.getOrDefault<scalar>("A", 6)),
+    diffusivityModel
+    (
+        typeName,
+        modelCoeffs::checked(dict, typeName, {"A", "a", "m", "b"}),
+        mixture
+    ),
+    A_(0),
+    // Optional, defaults the seed's eq 15: a 1, m 1, b -1.5 (exponents)
     a_(coeffs_.getOrDefault<scalar>("a", 1)),
     m_(coeffs_.getOrDefault<scalar>("m", 1)),
     b_(coeffs_.getOrDefault<scalar>("b", -1.5))
 {
+    // A carries the units of the law, [m2/s]/[m2/s2]^m: seconds for the
+    // seed's m = 1. Optional, default the seed's 6 (in those units)
+    A_ = modelCoeffs::getOrDefault
+    (
+        coeffs_,
+        "A",
+        dimArea/dimTime/pow(sqr(dimVelocity), m_),
+        6
+    ).value();
+
     if (!(A_ >= 0) || !(m_ >= 0))
     {
         FatalIOErrorInFunction(coeffs_)
@@ -65,9 +83,14 @@ Foam::tmp<Foam::volScalarField> Foam::diffusivityModels::powerLaw::Dlaw
             zeroGradientFvPatchScalarField::typeName
         )
     );
-    tD.ref().primitiveFieldRef() =
-        A_*pow(1 + x.primitiveField(), a_)*pow(Tvalue.primitiveField(), m_)
-       *pow(phi.primitiveField(), b_);
+    scalarField& D = tD.ref().primitiveFieldRef();
+    forAll(D, celli)
+    {
+        D[celli] = sdf::fit::formulas::powerLaw
+        (
+            A_, a_, m_, b_, phi[celli], x[celli], Tvalue[celli]
+        );
+    }
     tD.ref().correctBoundaryConditions();
     return tD;
 }

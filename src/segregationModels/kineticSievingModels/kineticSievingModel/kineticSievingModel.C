@@ -7,6 +7,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "kineticSievingModel.H"
+#include "modelCoeffs.H"
 #include "fvcSnGrad.H"
 
 namespace Foam
@@ -24,7 +25,7 @@ Foam::kineticSievingModel::kineticSievingModel
 )
 :
     mixture_(mixture),
-    coeffs_(dict.optionalSubDict(type + "Coeffs"))
+    coeffs_(modelCoeffs::coeffsDict(dict, type))
 {}
 
 

@@ -7,6 +7,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "kineticSievingModel.H"
+#include "modelCoeffs.H"
 
 Foam::autoPtr<Foam::kineticSievingModel> Foam::kineticSievingModel::New
 (
@@ -29,7 +30,8 @@ Foam::autoPtr<Foam::kineticSievingModel> Foam::kineticSievingModel::New
             "kineticSieving model",
             modelType,
             *dictionaryConstructorTablePtr_
-        ) << exit(FatalIOError);
+        )   << modelCoeffs::libraryHint(modelType)
+            << exit(FatalIOError);
     }
 
     return autoPtr<kineticSievingModel>(cstrIter()(dict, mixture, bulkFlow));

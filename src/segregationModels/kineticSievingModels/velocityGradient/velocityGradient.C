@@ -8,6 +8,7 @@
 
 #include "velocityGradient.H"
 #include "addToRunTimeSelectionTable.H"
+#include "modelCoeffs.H"
 #include "fvcSnGrad.H"
 
 namespace Foam
@@ -32,10 +33,16 @@ Foam::kineticSievingModels::velocityGradient::velocityGradient
     const bulkFlowModel& bulkFlow
 )
 :
-    kineticSievingModel(typeName, dict, mixture),
+    kineticSievingModel
+    (
+        typeName,
+        modelCoeffs::checked(dict, typeName, {"eta", "Umin"}),
+        mixture
+    ),
     bulkFlow_(bulkFlow),
-    eta_(coeffs_.get<scalar>("eta")),
-    Umin_(coeffs_.getOrDefault<scalar>("Umin", 1e-6)),
+    eta_(modelCoeffs::get(coeffs_, "eta", dimArea/dimTime).value()),
+    // Optional, default 1e-6 m/s: the speed below which ln|U| is cut off
+    Umin_(modelCoeffs::getOrDefault(coeffs_, "Umin", dimVelocity, 1e-6).value()),
     gradLnUSf_
     (
         IOobject

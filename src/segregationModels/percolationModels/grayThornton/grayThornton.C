@@ -8,6 +8,7 @@
 
 #include "grayThornton.H"
 #include "addToRunTimeSelectionTable.H"
+#include "modelCoeffs.H"
 
 namespace Foam
 {
@@ -26,8 +27,13 @@ Foam::percolationModels::grayThornton::grayThornton
     const bulkFlowModel&
 )
 :
-    percolationModel(typeName, dict, mixture),
-    Sr_(coeffs_.get<scalar>("Sr")),
+    percolationModel
+    (
+        typeName,
+        modelCoeffs::checked(dict, typeName, {"Sr"}),
+        mixture
+    ),
+    Sr_(modelCoeffs::get(coeffs_, "Sr", dimVelocity).value()),
     gSf_
     (
         IOobject

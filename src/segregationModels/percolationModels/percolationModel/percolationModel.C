@@ -7,6 +7,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "percolationModel.H"
+#include "modelCoeffs.H"
 
 namespace Foam
 {
@@ -23,7 +24,7 @@ Foam::percolationModel::percolationModel
 )
 :
     mixture_(mixture),
-    coeffs_(dict.optionalSubDict(type + "Coeffs"))
+    coeffs_(modelCoeffs::coeffsDict(dict, type))
 {}
 
 

@@ -1,0 +1,427 @@
+/*---------------------------------------------------------------------------*\
+  =========                 |
+  \\      /  F ield         | segregationDegradationFoam
+   \\    /   O peration     |
+    \\  /    A nd           |
+     \\/     M anipulation  |
+\*---------------------------------------------------------------------------*/
+
+#include "caseEnvelope.H"
+#include "numberText.H"
+#include "calibrationSettings.H"
+#include "demDictionary.H"
+#include "granularMixture.H"
+#include "IFstream.H"
+#include "ITstream.H"
+#include "OSspecific.H"
+
+#include <algorithm>
+#include <cstdlib>
+#include <utility>
+#include <vector>
+
+using namespace Foam;
+using numberText::fmt;
+using numberText::listText;
+
+namespace
+{
+
+//- Limits of the envelope a case's fields are clipped to: the DEM's valid
+//  range with a margin (a periodic cell near random close packing 0.64
+//  jams; a cell of one species only has no mixture to calibrate)
+const scalar fromCasePhiMax = 0.6;
+const scalar fromCaseXMin = 0.05;
+const scalar fromCaseXMax = 0.95;
+
+
+//- v rounded to 4 significant digits: the envelope values read as printed
+//  (and as they appear in the condition names)
+scalar roundSignificant(const scalar v)
+{
+    char buf[64];
+    std::snprintf(buf, sizeof(buf), "%.4g", v);
+    return std::strtod(buf, nullptr);
+}
+
+
+//- n values spanning [lo, hi], linearly or logarithmically spaced; one value
+//  if the range is degenerate (after rounding to 4 significant digits)
+scalarList envelopeValues
+(
+    const scalar lo,
+    const scalar hi,
+    const label n,
+    const bool logSpacing
+)
+{
+    scalarList values;
+    const scalar first = roundSignificant(lo);
+    if (n == 1 || roundSignificant(hi) <= first)
+    {
+        values.append(first);
+        return values;
+    }
+    for (label i = 0; i < n; ++i)
+    {
+        const scalar f = scalar(i)/(n - 1);
+        const scalar v =
+            logSpacing
+          ? lo*std::pow(hi/lo, f)
+          : lo + (hi - lo)*f;
+        const scalar r = roundSignificant(v);
+        if (values.empty() || r > values.last())
+        {
+            values.append(r);
+        }
+    }
+    return values;
+}
+
+
+//- Cell values of a volScalarField file: its internalField, uniform (one
+//  value) or nonuniform (one value per cell). Read as a dictionary, so that
+//  no mesh is needed (and -parallel needs no decomposition).
+struct CellValues
+{
+    bool uniform = true;
+    scalarList values;
+
+    scalar operator[](const label celli) const
+    {
+        return uniform ? values[0] : values[celli];
+    }
+};
+
+
+CellValues readCellValues(const fileName& file, const Time& runTime)
+{
+    IFstream is(file);
+    IOobject io(file.name(), file.path().name(), runTime);
+    if (!is.good() || !io.readHeader(is))
+    {
+        FatalErrorInFunction
+            << "Cannot read the field file " << file << nl << exit(FatalError);
+    }
+    const dictionary fieldDict(is);
+    ITstream& its = fieldDict.lookup("internalField");
+    CellValues cv;
+    const token kind(its);
+    if (kind.isWord() && kind.wordToken() == "uniform")
+    {
+        cv.values.append(readScalar(its));
+    }
+    else if (kind.isWord() && kind.wordToken() == "nonuniform")
+    {
+        cv.uniform = false;
+        its >> cv.values;
+    }
+    else
+    {
+        FatalIOErrorInFunction(fieldDict)
+            << "internalField of " << file << " is neither uniform nor"
+            << " nonuniform" << nl << exit(FatalIOError);
+    }
+    return cv;
+}
+
+
+//- The time directories of a directory (names that read as numbers)
+wordList timeDirectories(const fileName& dir)
+{
+    std::vector<std::pair<scalar, word>> times;
+    for (const fileName& d : readDir(dir, fileName::DIRECTORY))
+    {
+        scalar t;
+        if (readScalar(d, t))
+        {
+            times.push_back({t, word(d)});
+        }
+    }
+    std::sort(times.begin(), times.end());
+    wordList names;
+    for (const auto& t : times)
+    {
+        names.append(t.second);
+    }
+    return names;
+}
+
+
+//- Whether granularProperties switches a mechanism on (model not none)
+bool mechanismOn(const dictionary& properties, const word& mechanism)
+{
+    if (!properties.isDict(mechanism))
+    {
+        FatalIOErrorInFunction(properties)
+            << "-fromCase: " << properties.name() << " has no sub-dictionary '"
+            << mechanism << "' (give it with 'model none;' to switch the"
+            << " mechanism off)" << nl << exit(FatalIOError);
+    }
+    return properties.subDict(mechanism).get<word>("model") != "none";
+}
+
+} // End anonymous namespace
+
+
+//- The envelope of a case at a time: the ranges of phi, x and T over the
+//  cells holding material (phi >= phiMin), clipped to the DEM's valid range
+//  and turned into fromCase/points values per axis; the coefficients of the
+//  mechanisms the case switches on. An empty coefficient list: nothing to
+//  calibrate.
+Foam::caseEnvelope Foam::deriveEnvelope
+(
+    const Time& runTime,
+    const dictionary& properties,
+    const dictionary& dict,
+    const word& timeArg
+)
+{
+    caseEnvelope env;
+    const fileName caseDir(runTime.globalPath());
+
+    // Coefficients of the mechanisms the case switches on
+    const bool diffusion = mechanismOn(properties, "diffusivity");
+    const bool sieving = mechanismOn(properties, "kineticSieving");
+    if (diffusion) env.coefficients.append("D");
+    if (sieving) env.coefficients.append("eta");
+    Info<< "-fromCase: diffusivity "
+        << properties.subDict("diffusivity").get<word>("model")
+        << ", kineticSieving "
+        << properties.subDict("kineticSieving").get<word>("model")
+        << " in constant/granularProperties -> coefficients (";
+    for (const word& c : env.coefficients)
+    {
+        Info<< (&c == &env.coefficients.first() ? "" : " ") << c;
+    }
+    Info<< ")" << nl;
+    if (env.coefficients.empty())
+    {
+        return env;
+    }
+
+    // Options
+    const dictionary& opts = dict.subOrEmptyDict("fromCase");
+    demDictionary::checkEntries(opts, wordList({"points", "minTRatio"}));
+    const label points = opts.getOrDefault<label>("points", 3);
+    if (points < 1)
+    {
+        FatalIOErrorInFunction(opts)
+            << "Entry 'fromCase/points' " << points << ": give the number of"
+            << " values per envelope axis, >= 1" << nl << exit(FatalIOError);
+    }
+    const scalar minTRatio = opts.getOrDefault<scalar>("minTRatio", 1e-3);
+    if (!(minTRatio > 0 && minTRatio <= 1))
+    {
+        FatalIOErrorInFunction(opts)
+            << "Entry 'fromCase/minTRatio' " << minTRatio << " is outside"
+            << " (0, 1]: the smallest T calibrated, as a fraction of the"
+            << " largest T of the case" << nl << exit(FatalIOError);
+    }
+
+    // Species: the fine is the smaller diameter
+    const FixedList<granularSpecies, 2> species
+    (
+        calibrationSettings::fineAndCoarse
+        (
+            granularMixture::readSpecies(properties),
+            properties.subDict("species")
+        )
+    );
+    const word& fine = species[0].name;
+    const word& coarse = species[1].name;
+    const scalar phiMin = properties.getOrDefault<scalar>("phiMin", 0.05);
+
+    // Time: the latest of the case (or of its processor directories when
+    // the case ran decomposed and was not reconstructed), or the one given
+    const wordList times(timeDirectories(caseDir));
+    const wordList procTimes(timeDirectories(caseDir/"processor0"));
+    word time;
+    if (timeArg == "latestTime")
+    {
+        scalar latest = -GREAT;
+        for (const wordList* list : {&times, &procTimes})
+        {
+            if (!list->empty() && readScalar(list->last()) > latest)
+            {
+                latest = readScalar(list->last());
+                time = list->last();
+            }
+        }
+    }
+    else
+    {
+        scalar wanted;
+        if (!readScalar(timeArg, wanted))
+        {
+            FatalErrorInFunction
+                << "-fromCase " << timeArg << ": not a time (give a time"
+                << " directory name of the case, or nothing for the latest)"
+                << nl << exit(FatalError);
+        }
+        for (const wordList* list : {&times, &procTimes})
+        {
+            for (const word& t : *list)
+            {
+                if (mag(readScalar(t) - wanted) <= 1e-12*max(mag(wanted), 1))
+                {
+                    time = t;
+                }
+            }
+        }
+    }
+    if (time.empty())
+    {
+        FatalErrorInFunction
+            << "-fromCase " << timeArg << ": no such time directory in "
+            << caseDir << " (times: " << times << ", processor0: "
+            << procTimes << ")" << nl << exit(FatalError);
+    }
+
+    // Where the fields are: the case, or every processor directory
+    std::vector<fileName> sources;
+    if (isDir(caseDir/time))
+    {
+        sources.push_back(caseDir/time);
+    }
+    else
+    {
+        for (label proci = 0; isDir(caseDir/("processor" + Foam::name(proci))); ++proci)
+        {
+            sources.push_back(caseDir/("processor" + Foam::name(proci))/time);
+        }
+    }
+
+    const bool haveT = isFile(sources[0]/"T");
+    if (!haveT && !dict.found("T"))
+    {
+        FatalErrorInFunction
+            << "-fromCase: the granular temperature field T is missing: no"
+            << " file " << sources[0]/"T" << nl
+            << "    The solver writes T when constant/granularProperties has"
+            << " 'writeFields (T ...);' (and a granularTemperature model):"
+            << " add T to writeFields and rerun the solver to time " << time
+            << ", or give the temperatures as 'T (..);' in"
+            << " system/calibrationDict" << nl << exit(FatalError);
+    }
+
+    scalar phiLo = GREAT, phiHi = -GREAT;
+    scalar xLo = GREAT, xHi = -GREAT;
+    scalar TLo = GREAT, THi = -GREAT;
+    label cells = 0, material = 0;
+    for (const fileName& dir : sources)
+    {
+        const CellValues nFine(readCellValues(dir/("n." + fine), runTime));
+        const CellValues nCoarse(readCellValues(dir/("n." + coarse), runTime));
+        const CellValues T
+        (
+            haveT ? readCellValues(dir/"T", runTime) : CellValues()
+        );
+        label n = 1;
+        for (const CellValues* f : {&nFine, &nCoarse, &T})
+        {
+            if (!f->uniform)
+            {
+                if (n > 1 && f->values.size() != n)
+                {
+                    FatalErrorInFunction
+                        << "-fromCase: the fields in " << dir << " have"
+                        << " different numbers of cells" << nl
+                        << exit(FatalError);
+                }
+                n = f->values.size();
+            }
+        }
+        cells += n;
+        for (label celli = 0; celli < n; ++celli)
+        {
+            const scalar phi = nFine[celli] + nCoarse[celli];
+            if (!(phi >= phiMin))
+            {
+                continue;
+            }
+            ++material;
+            const scalar x = nCoarse[celli]/phi;
+            phiLo = min(phiLo, phi);
+            phiHi = max(phiHi, phi);
+            xLo = min(xLo, x);
+            xHi = max(xHi, x);
+            if (haveT && T[celli] > 0)
+            {
+                TLo = min(TLo, T[celli]);
+                THi = max(THi, T[celli]);
+            }
+        }
+    }
+    if (material == 0)
+    {
+        FatalErrorInFunction
+            << "-fromCase: no cell at time " << time << " holds material"
+            << " (phi = n." << fine << " + n." << coarse << " >= phiMin "
+            << phiMin << ")" << nl << exit(FatalError);
+    }
+
+    Info<< "-fromCase: fields at time " << time << " ("
+        << (sources.size() > 1 ? "processor directories" : "case") << "), "
+        << material << " of " << cells << " cells hold material (phi >= "
+        << phiMin << "), " << points << " points per axis" << nl;
+    auto report = [](const char* axis, scalar lo, scalar hi, scalar cLo,
+                     scalar cHi, const scalarList& values)
+    {
+        Info<< "-fromCase " << axis << ": case range [" << fmt(lo).c_str()
+            << ", " << fmt(hi).c_str() << "], clipped [" << fmt(cLo).c_str()
+            << ", " << fmt(cHi).c_str() << "] -> " << listText(values).c_str()
+            << nl;
+    };
+
+    const scalar phiCLo = min(phiLo, fromCasePhiMax);
+    const scalar phiCHi = min(phiHi, fromCasePhiMax);
+    env.phi = envelopeValues(phiCLo, phiCHi, points, false);
+    report("phi", phiLo, phiHi, phiCLo, phiCHi, env.phi);
+
+    const scalar xCLo = min(max(xLo, fromCaseXMin), fromCaseXMax);
+    const scalar xCHi = min(max(xHi, fromCaseXMin), fromCaseXMax);
+    env.x = envelopeValues(xCLo, xCHi, points, false);
+    report("x", xLo, xHi, xCLo, xCHi, env.x);
+
+    if (haveT)
+    {
+        if (!(THi > 0))
+        {
+            FatalErrorInFunction
+                << "-fromCase: T is zero in every cell holding material at"
+                << " time " << time << ": a static case, no granular"
+                << " temperature to calibrate at; give 'T (..);' in"
+                << " system/calibrationDict" << nl << exit(FatalError);
+        }
+        // T spans many decades in a silo (nearly static zones): calibrate
+        // above minTRatio times the largest T; the calibrated models'
+        // outsideEnvelope decides below it
+        const scalar TCLo = max(TLo, minTRatio*THi);
+        env.T = envelopeValues(TCLo, THi, points, true);
+        report("T", TLo, THi, TCLo, THi, env.T);
+    }
+    else
+    {
+        env.T = calibrationSettings::readEnvelopeList
+        (
+            dict, "T", 0, 1e301, "granular temperature [m2/s2], sum of 3 components"
+        );
+        Info<< "-fromCase T: no field T at time " << time << ", the T list"
+            << " of system/calibrationDict is used: " << listText(env.T).c_str()
+            << nl;
+    }
+    for (const word& key : wordList({"phi", "x", "T", "coefficients"}))
+    {
+        if (dict.found(key) && !(key == "T" && !haveT))
+        {
+            Info<< "-fromCase: entry '" << key.c_str() << "' of "
+                << dict.name() << " is overridden by the case" << nl;
+        }
+    }
+    Info<< endl;
+    return env;
+}
+
+
+// ************************************************************************* //

@@ -1,0 +1,281 @@
+/*---------------------------------------------------------------------------*\
+  =========                 |
+  \\      /  F ield         | segregationDegradationFoam
+   \\    /   O peration     |
+    \\  /    A nd           |
+     \\/     M anipulation  |
+\*---------------------------------------------------------------------------*/
+
+#include "conditionScheduler.H"
+#include "numberText.H"
+#include "Pstream.H"
+
+#include "store/Store.hpp"
+
+#include <atomic>
+#include <chrono>
+#include <condition_variable>
+#include <deque>
+#include <mutex>
+#include <thread>
+
+#include <omp.h>
+
+using namespace Foam;
+using numberText::fmt;
+
+namespace
+{
+
+//- A DEM condition finished by a worker thread, handed to the main thread
+//  (the only one that calls HDF5 and writes to Info)
+struct FinishedCondition
+{
+    label index = -1;                    // in the list of all conditions
+    sdf::dem::CellRunResult result;
+    std::string error;                   // the engine's message if it stopped
+    double seconds = 0;
+};
+
+} // End anonymous namespace
+
+
+std::vector<Foam::calibrationCondition> Foam::envelopeConditions
+(
+    const calibrationSettings::envelopeAxes& envelope,
+    const labelList& replicas
+)
+{
+    std::vector<calibrationCondition> conds;
+    for (const scalar phi : envelope.phi)
+    {
+        for (const scalar x : envelope.x)
+        {
+            for (const scalar T : envelope.T)
+            {
+                for (const label seed : replicas)
+                {
+                    conds.push_back
+                    (
+                        {phi, x, T, seed, sdf::store::conditionName(phi, x, T, seed)}
+                    );
+                }
+            }
+        }
+    }
+    return conds;
+}
+
+
+std::vector<Foam::label> Foam::conditionsOfThisRank
+(
+    const std::vector<label>& todo
+)
+{
+    std::vector<label> mine;
+    for (std::size_t j = 0; j < todo.size(); ++j)
+    {
+        if (label(j % Pstream::nProcs()) == Pstream::myProcNo())
+        {
+            mine.push_back(todo[j]);
+        }
+    }
+    return mine;
+}
+
+
+Foam::label Foam::conditionWorkers
+(
+    const calibrationSettings& settings,
+    const label conditions,
+    OSstream& progress
+)
+{
+    const label threadsPerCell =
+        settings.base().simulation.threads > 0
+      ? label(settings.base().simulation.threads)
+      : label(omp_get_max_threads());
+    const label hardwareThreads =
+        max(label(1), label(std::thread::hardware_concurrency()));
+    label workers = settings.concurrentConditions();
+    if (workers == 0)
+    {
+        workers =
+            Pstream::parRun()
+          ? 1
+          : max(label(1), hardwareThreads/threadsPerCell);
+    }
+    workers = max(label(1), min(workers, conditions));
+
+    if (conditions > 0)
+    {
+        progress
+            << conditions << " conditions to run, " << workers
+            << " at once (" << threadsPerCell << " threads per cell, "
+            << hardwareThreads << " hardware threads"
+            << (
+                   Pstream::parRun()
+                 ? ", rank " + std::to_string(Pstream::myProcNo()) + " of "
+                 + std::to_string(Pstream::nProcs())
+                 : std::string()
+               ).c_str()
+            << ")" << endl;
+    }
+    return workers;
+}
+
+
+Foam::label Foam::runConditions
+(
+    const std::vector<calibrationCondition>& conds,
+    const std::vector<label>& todo,
+    const calibrationSettings& settings,
+    const label workers,
+    const fileName& store,
+    OSstream& progress
+)
+{
+    std::mutex mutex;
+    std::condition_variable finishedOne;
+    std::deque<FinishedCondition> finished;
+    std::atomic<std::size_t> next{0};
+    std::atomic<bool> stop{false};
+    label running = workers;
+
+    auto work = [&]()
+    {
+        for (;;)
+        {
+            const std::size_t j = next++;
+            if (stop || j >= todo.size())
+            {
+                break;
+            }
+            FinishedCondition f;
+            f.index = todo[j];
+            const auto t0 = std::chrono::steady_clock::now();
+            try
+            {
+                const calibrationCondition& c = conds[f.index];
+                f.result = sdf::dem::runCell
+                (
+                    settings.conditionSettings(c.phi, c.x, c.T, c.seed, c.name)
+                );
+            }
+            catch (const std::exception& err)
+            {
+                f.error = err.what();
+            }
+            f.seconds = std::chrono::duration<double>
+                (std::chrono::steady_clock::now() - t0).count();
+            {
+                std::lock_guard<std::mutex> lock(mutex);
+                finished.push_back(std::move(f));
+            }
+            finishedOne.notify_one();
+        }
+        {
+            std::lock_guard<std::mutex> lock(mutex);
+            --running;
+        }
+        finishedOne.notify_one();
+    };
+
+    const auto start = std::chrono::steady_clock::now();
+    std::vector<std::thread> pool;
+    for (label w = 0; w < workers; ++w)
+    {
+        pool.emplace_back(work);
+    }
+
+    label ran = 0;
+    std::string firstError;
+    std::unique_lock<std::mutex> lock(mutex);
+    for (;;)
+    {
+        finishedOne.wait
+        (
+            lock, [&]{ return !finished.empty() || running == 0; }
+        );
+        if (finished.empty())
+        {
+            break;
+        }
+        FinishedCondition f(std::move(finished.front()));
+        finished.pop_front();
+        lock.unlock();
+
+        const calibrationCondition& c = conds[f.index];
+        const std::string where =
+            "condition " + std::to_string(f.index + 1) + "/"
+          + std::to_string(conds.size())
+          + " (phi " + fmt(c.phi) + " x " + fmt(c.x) + " T " + fmt(c.T)
+          + " seed " + std::to_string(c.seed) + ")";
+        if (!f.error.empty())
+        {
+            stop = true;
+            if (firstError.empty())
+            {
+                firstError =
+                    "The DEM engine stopped " + where + ":\n    " + f.error;
+            }
+        }
+        else
+        {
+            try
+            {
+                sdf::store::appendCondition
+                (
+                    store,
+                    settings.fine().name,
+                    settings.coarse().name,
+                    settings.settingsKey(),
+                    {c.name, c.phi, c.x, c.T, c.seed},
+                    f.result
+                );
+                ++ran;
+                const double total = std::chrono::duration<double>
+                    (std::chrono::steady_clock::now() - start).count();
+                const double eta = total/ran*(label(todo.size()) - ran);
+                const sdf::dem::CellRunResult& r = f.result;
+                progress << where.c_str() << " done in " << fmt(f.seconds).c_str()
+                    << " s, ETA " << fmt(eta).c_str()
+                    << " s (T = " << fmt(r.temperature).c_str()
+                    << ", D_" << settings.fine().name.c_str() << " = "
+                    << fmt(r.species[0].greenKubo.integral.value).c_str()
+                    << " +- "
+                    << fmt(r.species[0].greenKubo.integral.standardError).c_str()
+                    << " m2/s"
+                    << (r.species[0].greenKubo.plateauFound ? "" : ", no plateau")
+                    << ")" << endl;
+            }
+            catch (const std::exception& err)
+            {
+                stop = true;
+                if (firstError.empty())
+                {
+                    firstError =
+                        "Storing " + where + " in " + std::string(store)
+                      + " failed:\n    " + err.what();
+                }
+            }
+        }
+        lock.lock();
+    }
+    lock.unlock();
+    for (std::thread& t : pool)
+    {
+        t.join();
+    }
+    if (!firstError.empty())
+    {
+        FatalErrorInFunction
+            << firstError.c_str() << nl
+            << "    Every condition finished before is stored in " << store
+            << nl << exit(FatalError);
+    }
+    return ran;
+}
+
+
+// ************************************************************************* //

@@ -1,0 +1,331 @@
+/*---------------------------------------------------------------------------*\
+  =========                 |
+  \\      /  F ield         | segregationDegradationFoam
+   \\    /   O peration     |
+    \\  /    A nd           |
+     \\/     M anipulation  |
+\*---------------------------------------------------------------------------*/
+
+#include "calibrationSettings.H"
+#include "demDictionary.H"
+#include "numberText.H"
+#include "store/Store.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <set>
+
+// * * * * * * * * * * * * * * * Static Data * * * * * * * * * * * * * * * * //
+
+const Foam::wordList Foam::calibrationSettings::validCoefficients({"D", "eta"});
+
+const Foam::wordList Foam::calibrationSettings::validDLaws
+({
+    "powerLaw", "kineticTheoryGroups"
+});
+
+const Foam::wordList Foam::calibrationSettings::validEtaLaws
+({
+    "sievingCompositionPowerLaw", "sievingPowerLaw"
+});
+
+
+namespace
+{
+
+const Foam::wordList validEntries
+({
+    "phi", "x", "T", "replicas", "coefficients", "laws", "etaLaws",
+    "etaDiameterPower", "fitMaxIterations",
+    "particles", "mode", "plot", "concurrentConditions", "fromCase"
+});
+
+
+using Foam::numberText::fmt;
+
+
+//- Candidate laws of one coefficient: entry `key` (default: all valid ones),
+//  not empty, every name known
+Foam::wordList readLawList
+(
+    const Foam::dictionary& dict,
+    const Foam::word& key,
+    const Foam::wordList& valid,
+    const Foam::word& coefficient
+)
+{
+    using namespace Foam;
+    const wordList laws(dict.getOrDefault<wordList>(key, valid));
+    if (laws.empty())
+    {
+        FatalIOErrorInFunction(dict)
+            << "Entry '" << key << "' is empty; valid laws for "
+            << coefficient << ": " << valid << nl << exit(FatalIOError);
+    }
+    for (const word& l : laws)
+    {
+        if (!valid.found(l))
+        {
+            FatalIOErrorInFunction(dict)
+                << "Unknown law '" << l << "' in entry '" << key << "'" << nl
+                << "    valid laws for " << coefficient << ": " << valid << nl
+                << exit(FatalIOError);
+        }
+    }
+    return laws;
+}
+
+} // End anonymous namespace
+
+
+// * * * * * * * * * * * * * Static Member Functions * * * * * * * * * * * //
+
+Foam::FixedList<Foam::granularSpecies, 2>
+Foam::calibrationSettings::fineAndCoarse
+(
+    const List<granularSpecies>& species,
+    const dictionary& speciesContext
+)
+{
+    if (species.size() != 2)
+    {
+        wordList names(species.size());
+        forAll(species, i)
+        {
+            names[i] = species[i].name;
+        }
+        FatalIOErrorInFunction(speciesContext)
+            << "calibrateGranularMixture calibrates binary mixtures: "
+            << speciesContext.name() << " declares " << species.size()
+            << " species " << names << ", need 2" << nl << exit(FatalIOError);
+    }
+    FixedList<granularSpecies, 2> pair({species[0], species[1]});
+    if (pair[1].d < pair[0].d)
+    {
+        std::swap(pair[0], pair[1]);
+    }
+    if (!(pair[1].d > pair[0].d))
+    {
+        FatalIOErrorInFunction(speciesContext)
+            << "The two species have the same diameter: no fine and coarse"
+            << nl << exit(FatalIOError);
+    }
+    return pair;
+}
+
+
+Foam::scalarList Foam::calibrationSettings::readEnvelopeList
+(
+    const dictionary& dict,
+    const word& key,
+    const scalar lo,
+    const scalar hi,
+    const string& meaning
+)
+{
+    if (!dict.found(key))
+    {
+        FatalIOErrorInFunction(dict)
+            << "Missing envelope entry '" << key << "' (" << meaning.c_str()
+            << ") in " << dict.name() << nl << exit(FatalIOError);
+    }
+    const scalarList values(dict.get<scalarList>(key));
+    if (values.empty())
+    {
+        FatalIOErrorInFunction(dict)
+            << "Envelope entry '" << key << "' (" << meaning.c_str()
+            << ") is empty: give at least one value" << nl
+            << exit(FatalIOError);
+    }
+    std::set<scalar> seen;
+    for (const scalar v : values)
+    {
+        if (!std::isfinite(v) || v <= lo || v >= hi)
+        {
+            FatalIOErrorInFunction(dict)
+                << "Envelope entry '" << key << "' (" << meaning.c_str()
+                << "): value " << v << " is outside (" << lo << ", "
+                << (hi > 1e300 ? std::string("inf") : fmt(hi)).c_str()
+                << ")" << nl << exit(FatalIOError);
+        }
+        if (!seen.insert(v).second)
+        {
+            FatalIOErrorInFunction(dict)
+                << "Envelope entry '" << key << "': value " << v
+                << " appears twice" << nl << exit(FatalIOError);
+        }
+    }
+    // An envelope axis is a grid line (the tabulated models interpolate
+    // along it): values in increasing order, so an inverted range is caught
+    for (label i = 1; i < values.size(); ++i)
+    {
+        if (!(values[i] > values[i - 1]))
+        {
+            FatalIOErrorInFunction(dict)
+                << "Envelope entry '" << key << "' (" << meaning.c_str()
+                << ") is not in increasing order (inverted envelope?): "
+                << values << nl
+                << "    give the values from the smallest to the largest"
+                << nl << exit(FatalIOError);
+        }
+    }
+    return values;
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::calibrationSettings::calibrationSettings
+(
+    const dictionary& calibrationDict,
+    const granularSpecies& fine,
+    const granularSpecies& coarse
+)
+:
+    dict_(calibrationDict),
+    fine_(fine),
+    coarse_(coarse),
+    etaDiameterPower_(1),
+    fitMaxIterations_(2000),
+    plot_(true),
+    concurrentConditions_(0)
+{
+    const dictionary& dict = dict_;
+    wordList valid(validEntries);
+    valid.append(demDictionary::runControlEntries());
+    demDictionary::checkEntries(dict, valid);
+
+    replicas_ = dict.getOrDefault<labelList>("replicas", labelList({1}));
+    if (replicas_.empty())
+    {
+        FatalIOErrorInFunction(dict)
+            << "Entry 'replicas' (DEM seeds) is empty" << nl
+            << exit(FatalIOError);
+    }
+    {
+        std::set<label> seen;
+        for (const label r : replicas_)
+        {
+            if (r < 0 || !seen.insert(r).second)
+            {
+                FatalIOErrorInFunction(dict)
+                    << "Entry 'replicas': seed " << r
+                    << " is negative or appears twice" << nl
+                    << exit(FatalIOError);
+            }
+        }
+    }
+
+    coefficients_ =
+        dict.getOrDefault<wordList>("coefficients", wordList({"D"}));
+    if (coefficients_.empty())
+    {
+        FatalIOErrorInFunction(dict)
+            << "Entry 'coefficients' is empty; valid names: "
+            << validCoefficients << nl << exit(FatalIOError);
+    }
+    for (const word& c : coefficients_)
+    {
+        if (!validCoefficients.found(c))
+        {
+            FatalIOErrorInFunction(dict)
+                << "Unknown coefficient '" << c << "' in entry 'coefficients'"
+                << nl << "    valid names: " << validCoefficients
+                << " (D: diffusivity of the fines, eta: kinetic sieving"
+                << " coefficient of the coarse)" << nl << exit(FatalIOError);
+        }
+    }
+    laws_ = readLawList(dict, "laws", validDLaws, "D");
+    etaLaws_ = readLawList(dict, "etaLaws", validEtaLaws, "eta");
+    etaDiameterPower_ = dict.getOrDefault<label>("etaDiameterPower", 1);
+    fitMaxIterations_ = dict.getOrDefault<label>("fitMaxIterations", 2000);
+    if (fitMaxIterations_ < 1)
+    {
+        FatalIOErrorInFunction(dict)
+            << "Entry 'fitMaxIterations' must be at least 1, not "
+            << fitMaxIterations_ << nl << exit(FatalIOError);
+    }
+    plot_ = dict.getOrDefault<bool>("plot", true);
+    concurrentConditions_ =
+        dict.getOrDefault<label>("concurrentConditions", 0);
+    if (concurrentConditions_ < 0)
+    {
+        FatalIOErrorInFunction(dict)
+            << "Entry 'concurrentConditions' " << concurrentConditions_
+            << " is negative: give the number of DEM conditions to run at"
+            << " once, or 0 for automatic (hardware threads / threads per"
+            << " cell; 1 per rank with -parallel)" << nl << exit(FatalIOError);
+    }
+
+    // DEM settings
+    sdf::dem::CellRunSettings& b = base_;
+    b.species =
+    {
+        {fine_.name, fine_.d, fine_.rho},
+        {coarse_.name, coarse_.d, coarse_.rho}
+    };
+    b.particles = dict.getOrDefault<label>("particles", 1000);
+    const word mode(dict.getOrDefault<word>("mode", "thermostatted"));
+    if (mode != "thermostatted")
+    {
+        FatalIOErrorInFunction(dict)
+            << "Entry 'mode' " << mode << ": the calibration runs driven"
+            << " cells only (mode thermostatted)" << nl
+            << exit(FatalIOError);
+    }
+    b.simulation.mode = sdf::dem::cellModeFromName(mode);
+    demDictionary::readRunControls(dict, b);
+    b.progressEvery = 0;
+
+    settingsKey_ = sdf::store::settingsKey
+    (
+        b,
+        dict.subOrEmptyDict("contact")
+            .getOrDefault<word>("model", "linearSpringDashpot")
+    );
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+Foam::calibrationSettings::envelopeAxes
+Foam::calibrationSettings::envelope() const
+{
+    envelopeAxes axes;
+    axes.phi = readEnvelopeList
+    (
+        dict_, "phi", 0, phiJamming, "solids fraction, below jamming 0.64"
+    );
+    axes.x = readEnvelopeList
+    (
+        dict_, "x", 0, 1, "coarse fraction of the solids"
+    );
+    axes.T = readEnvelopeList
+    (
+        dict_, "T", 0, 1e301,
+        "granular temperature [m2/s2], sum of 3 components"
+    );
+    return axes;
+}
+
+
+sdf::dem::CellRunSettings Foam::calibrationSettings::conditionSettings
+(
+    const scalar phi,
+    const scalar x,
+    const scalar T,
+    const label seed,
+    const std::string& name
+) const
+{
+    sdf::dem::CellRunSettings s = base_;
+    s.volumeFractions = {1 - x, x};
+    s.solidsFraction = phi;
+    s.simulation.targetTemperature = T;
+    s.seed = seed;
+    s.label = name;
+    return s;
+}
+
+
+// ************************************************************************* //
