@@ -1,6 +1,6 @@
 # shellcheck shell=bash
 # Tests of tests/unit/ (sourced by tests/run): the GoogleTest program
-# granularModelsTest on its small case.
+# granularModelsTest and calibratedModelsTest on their small case.
 
 test_unit_models()
 {
@@ -8,4 +8,12 @@ test_unit_models()
     rm -rf "$dir"; cp -r tests/unit/testCase "$dir"
     blockMesh -case "$dir" > "$dir/log.blockMesh" 2>&1 || return 1
     granularModelsTest -case "$dir"
+}
+
+test_unit_calibrated_models()
+{
+    local dir="$workRoot/unitCalibratedCase"
+    rm -rf "$dir"; cp -r tests/unit/testCase "$dir"
+    blockMesh -case "$dir" > "$dir/log.blockMesh" 2>&1 || return 1
+    calibratedModelsTest -case "$dir"
 }

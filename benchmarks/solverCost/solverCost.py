@@ -526,7 +526,7 @@ def report(args, work, runs):
     md = []
     md.append(f"Measured {start} on a {facts['nproc']}-core "
               f"{facts['cpu']} ({facts['mem']}, Linux {facts['kernel']}); the machine was "
-              f"**shared with other engineers** (load average {load0} at start, {load1} at "
+              f"**shared with other jobs** (load average {load0} at start, {load1} at "
               f"end, on {facts['nproc']} cores), so the timings are noisy: runs are serial, "
               f"each repeated {args.repeats} times, minimum kept. The whole benchmark took "
               f"{elapsed:.0f} s. Solver build: "
@@ -576,7 +576,7 @@ def update_docs(args, table, rows, facts, start):
         "Cost of one species of `segregationDegradationFoam` per cell and time step, against "
         "one equation of OpenFOAM's `scalarTransportFoam` (Debian's v1912 binary), on the same "
         "meshes with the same physics, schemes, linear solver, tolerances and time step "
-        "(issue 2 acceptance: per-species cost at most 1.5 x).",
+        "(target: per-species cost at most 1.5 x).",
         "",
         "- Meshes: 2D unit square, nx x nx x 1 cells (blockMesh), inlet (x = 0, y = 0, "
         "fixedValue 0.1), outlet (x = 1, y = 1, zeroGradient), front and back empty.",

@@ -16,10 +16,10 @@ test_calibrated_run_dem()
     sed -e 's/^phi .*/phi (0.42);/' -e 's/^x .*/x (0.2 0.4);/' \
         -e 's/^T .*/T (0.005 0.02);/' -e 's/^plot .*/plot false;/' \
         "$calibrationCase/system/calibrationDict" > "$dir/system/calibrationDict"
-    granularModelsTest -case "$dir" --gtest_filter='*RunDEM*' \
-        > "$dir/log.granularModelsTest" 2>&1 \
-        || { tail -30 "$dir/log.granularModelsTest"; return 1; }
-    grep "runDEM" "$dir/log.granularModelsTest"
+    calibratedModelsTest -case "$dir" --gtest_filter='*RunDEM*' \
+        > "$dir/log.calibratedModelsTest" 2>&1 \
+        || { tail -30 "$dir/log.calibratedModelsTest"; return 1; }
+    grep "runDEM" "$dir/log.calibratedModelsTest"
     mv "$dir/constant/calibrationRunDEM.h5" "$dir/constant/calibration.h5"
     calibrateGranularMixture -noFit -case "$dir" \
         > "$dir/log.calibrateGranularMixture" 2>&1 \
@@ -49,7 +49,7 @@ test_silo_tabulated_run_dem()
         "$calibrationCase/system/calibrationDict" > "$dir/system/calibrationDict"
     calibrateGranularMixture -noFit -case "$dir" > "$dir/log.calibrateGranularMixture" 2>&1 \
         || { tail -30 "$dir/log.calibrateGranularMixture"; return 1; }
-    printf 'endTime 1;\nwriteInterval 1;\n' > "$dir/system/caseParameters"
+    printf 'endTime 1;\nwriteInterval 1;\nlibs ("libcalibratedModels.so");\n' > "$dir/system/caseParameters"
     cat > "$dir/constant/granularPropertiesOverrides" <<'OVERRIDES'
 diffusivity
 {
