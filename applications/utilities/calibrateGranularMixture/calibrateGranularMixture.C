@@ -48,6 +48,7 @@ Description
 
 #include "granularMixture.H"
 #include "calibrationSettings.H"
+#include "demDictionary.H"
 #include "calibrationStore.H"
 #include "caseEnvelope.H"
 #include "conditionScheduler.H"

@@ -202,7 +202,7 @@ Foam::caseEnvelope Foam::deriveEnvelope
 
     // Options
     const dictionary& opts = dict.subOrEmptyDict("fromCase");
-    demDictionary::checkEntries(opts, wordList({"points", "minTRatio"}));
+    modelCoeffs::checkKeys(opts, wordList({"points", "minTRatio"}));
     const label points = opts.getOrDefault<label>("points", 3);
     if (points < 1)
     {

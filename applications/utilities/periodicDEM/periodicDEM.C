@@ -80,7 +80,7 @@ sdf::dem::CellRunSettings readSettings
 {
     wordList valid(validEntries);
     valid.append(demDictionary::runControlEntries());
-    demDictionary::checkEntries(dict, valid);
+    modelCoeffs::checkKeys(dict, valid);
 
     sdf::dem::CellRunSettings s;
 
@@ -158,27 +158,16 @@ int main(int argc, char *argv[])
     sigFpe::unset();
     #include "createTime.H"
 
-    IOdictionary properties
+    const IOdictionary properties
     (
-        IOobject
+        demDictionary::readCaseDictionary
         (
-            "granularProperties",
-            runTime.constant(),
-            runTime,
-            IOobject::MUST_READ,
-            IOobject::NO_WRITE
+            runTime, "granularProperties", runTime.constant()
         )
     );
-    IOdictionary dict
+    const IOdictionary dict
     (
-        IOobject
-        (
-            "periodicDEMDict",
-            runTime.system(),
-            runTime,
-            IOobject::MUST_READ,
-            IOobject::NO_WRITE
-        )
+        demDictionary::readCaseDictionary(runTime, "periodicDEMDict", runTime.system())
     );
 
     const sdf::dem::CellRunSettings settings = readSettings(properties, dict);

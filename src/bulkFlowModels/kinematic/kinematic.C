@@ -7,6 +7,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "kinematic.H"
+#include "scratchField.H"
 #include "addToRunTimeSelectionTable.H"
 #include "fvm.H"
 #include "fvc.H"
@@ -190,21 +191,11 @@ void Foam::bulkFlowModels::kinematic::solveVelocity()
         vTypes[patchi] = fixedValueFvPatchScalarField::typeName;
     }
 
-    volScalarField v
+    tmp<volScalarField> vField
     (
-        IOobject
-        (
-            "vKinematic",
-            mesh.time().timeName(),
-            mesh,
-            IOobject::NO_READ,
-            IOobject::NO_WRITE,
-            false
-        ),
-        mesh,
-        dimensionedScalar("v", dimVelocity, Zero),
-        vTypes
+        scratchField(mesh, "vKinematic", dimVelocity, vTypes)
     );
+    volScalarField& v = vField.ref();
     for (const label patchi : outletPatches_)
     {
         v.boundaryFieldRef()[patchi] == scalar(1);
@@ -283,21 +274,11 @@ void Foam::bulkFlowModels::kinematic::solveVelocity()
             pTypes[patchi] = fixedValueFvPatchScalarField::typeName;
         }
     }
-    volScalarField pK
+    tmp<volScalarField> pKField
     (
-        IOobject
-        (
-            "pKinematic",
-            mesh.time().timeName(),
-            mesh,
-            IOobject::NO_READ,
-            IOobject::NO_WRITE,
-            false
-        ),
-        mesh,
-        dimensionedScalar("s", dimArea/dimTime, Zero),
-        pTypes
+        scratchField(mesh, "pKinematic", dimArea/dimTime, pTypes)
     );
+    volScalarField& pK = pKField.ref();
 
     mesh.setFluxRequired(pK.name());
     const dictionary pControls(solverControls(mesh, "pKinematic", true));

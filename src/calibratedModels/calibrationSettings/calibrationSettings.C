@@ -193,7 +193,7 @@ Foam::calibrationSettings::calibrationSettings
     const dictionary& dict = dict_;
     wordList valid(validEntries);
     valid.append(demDictionary::runControlEntries());
-    demDictionary::checkEntries(dict, valid);
+    modelCoeffs::checkKeys(dict, valid);
 
     replicas_ = dict.getOrDefault<labelList>("replicas", labelList({1}));
     if (replicas_.empty())

@@ -7,6 +7,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "segregationFlux.H"
+#include "scratchField.H"
 #include "fvc.H"
 #include "surfaceInterpolate.H"
 #include "calculatedFvPatchFields.H"
@@ -197,25 +198,7 @@ void Foam::segregationFlux::correctFluxes(const scalar deltaT)
     PtrList<volScalarField> lambda(mixture_.size());
     forAll(lambda, k)
     {
-        lambda.set
-        (
-            k,
-            new volScalarField
-            (
-                IOobject
-                (
-                    "lambda",
-                    mesh.time().timeName(),
-                    mesh,
-                    IOobject::NO_READ,
-                    IOobject::NO_WRITE,
-                    false
-                ),
-                mesh,
-                dimensionedScalar("s", dimless, Zero),
-                calculatedFvPatchScalarField::typeName
-            )
-        );
+        lambda.set(k, scratchField(mesh, "lambda", dimless));
     }
 
     // Outflow per species: fine i leaves the cell on the -F side... i.e.

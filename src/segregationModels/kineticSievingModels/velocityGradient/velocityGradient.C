@@ -83,13 +83,8 @@ Foam::kineticSievingModels::velocityGradient::driftFlux
 ) const
 {
     // The coarse moves up the gradient, so the fine drifts down it
-    return
-        dimensionedScalar
-        (
-            "W",
-            dimArea/dimTime,
-            -eta_*pairScale(mixture_, finei, coarsej)
-        )*gradLnUSf_;
+    const scalar pairEta = eta_*pairScale(mixture_, finei, coarsej);
+    return dimensionedScalar("W", dimArea/dimTime, -pairEta)*gradLnUSf_;
 }
 
 

@@ -70,13 +70,8 @@ Foam::percolationModels::grayThornton::driftFlux
     const label coarsej
 ) const
 {
-    return
-        dimensionedScalar
-        (
-            "W",
-            dimVelocity,
-            Sr_*pairScale(mixture_, finei, coarsej)
-        )*gSf_;
+    const scalar pairSr = Sr_*pairScale(mixture_, finei, coarsej);
+    return dimensionedScalar("W", dimVelocity, pairSr)*gSf_;
 }
 
 
