@@ -147,16 +147,16 @@ Foam::dimensionedScalar Foam::modelCoeffs::getOrDefault
 }
 
 
-Foam::string Foam::modelCoeffs::libraryHint(const word& modelType)
+const char* Foam::modelCoeffs::libraryHint(const word& modelType)
 {
     if (modelType == "calibrated")
     {
         return
-            "The calibrated models are in libcalibratedModels.so: add\n"
+            "\nThe calibrated models are in libcalibratedModels.so: add\n"
             "    libs (\"libcalibratedModels.so\");\n"
             "to system/controlDict\n";
     }
-    return string::null;
+    return "";
 }
 
 

@@ -24,6 +24,9 @@ test_bad_input()
         unknownModel)
             foamDictionary -entry diffusivity/model -set fancy "$gp" > /dev/null
             expect=("Unknown diffusivity model type fancy" "powerLaw" "kineticTheory" "constant" "none") ;;
+        calibratedWithoutLibrary)
+            foamDictionary -entry diffusivity/model -set calibrated "$gp" > /dev/null
+            expect=("Unknown diffusivity model type calibrated" "libcalibratedModels.so" "system/controlDict") ;;
         missingField)
             rm "$dir/0/n.coarse"
             expect=("n.coarse") ;;
