@@ -83,6 +83,23 @@ Foam::List<Foam::granularSpecies> Foam::granularMixture::readSpecies
 }
 
 
+Foam::scalar Foam::granularMixture::readPhiMin
+(
+    const dictionary& granularProperties
+)
+{
+    const scalar phiMin =
+        granularProperties.getOrDefault<scalar>("phiMin", 0.05);
+    if (!(phiMin > 0 && phiMin < 1))
+    {
+        FatalIOErrorInFunction(granularProperties)
+            << "phiMin " << phiMin << " must lie in (0, 1)" << nl
+            << exit(FatalIOError);
+    }
+    return phiMin;
+}
+
+
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
 void Foam::granularMixture::checkInitialFields() const
@@ -149,16 +166,9 @@ Foam::granularMixture::granularMixture(const fvMesh& mesh)
         dimensionedScalar("s", dimless, Zero),
         zeroGradientFvPatchScalarField::typeName
     ),
-    phiMin_(getOrDefault<scalar>("phiMin", 0.05)),
+    phiMin_(readPhiMin(*this)),
     writeFields_(getOrDefault<wordList>("writeFields", wordList()))
 {
-    if (!(phiMin_ > 0 && phiMin_ < 1))
-    {
-        FatalIOErrorInFunction(*this)
-            << "phiMin " << phiMin_ << " must lie in (0, 1)" << nl
-            << exit(FatalIOError);
-    }
-
     const wordList validFields({"T", "gammaDot", "dMean", "D", "nTotal"});
     for (const word& f : writeFields_)
     {

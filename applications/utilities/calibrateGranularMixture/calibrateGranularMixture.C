@@ -82,12 +82,22 @@ int main(int argc, char *argv[])
 
     #include "readDictionaries.H"
 
+    // Species (the one reader of granularProperties), fine first
+    const FixedList<granularSpecies, 2> species
+    (
+        calibrationSettings::fineAndCoarse
+        (
+            granularMixture::readSpecies(properties),
+            properties.subDict("species")
+        )
+    );
+
     std::optional<caseEnvelope> fromCase;
     if (args.found("fromCase"))
     {
         fromCase = deriveEnvelope
         (
-            runTime, properties, dict, args.get<word>("fromCase")
+            runTime, properties, species, dict, args.get<word>("fromCase")
         );
         if (fromCase->coefficients.empty())
         {
@@ -99,15 +109,6 @@ int main(int argc, char *argv[])
         }
     }
 
-    // Species (the one reader of granularProperties), fine first
-    const FixedList<granularSpecies, 2> species
-    (
-        calibrationSettings::fineAndCoarse
-        (
-            granularMixture::readSpecies(properties),
-            properties.subDict("species")
-        )
-    );
     const calibrationSettings settings(dict, species[0], species[1]);
 
     calibrationSettings::envelopeAxes envelope;

@@ -173,6 +173,7 @@ Foam::caseEnvelope Foam::deriveEnvelope
 (
     const Time& runTime,
     const dictionary& properties,
+    const FixedList<granularSpecies, 2>& species,
     const dictionary& dict,
     const word& timeArg
 )
@@ -220,17 +221,9 @@ Foam::caseEnvelope Foam::deriveEnvelope
     }
 
     // Species: the fine is the smaller diameter
-    const FixedList<granularSpecies, 2> species
-    (
-        calibrationSettings::fineAndCoarse
-        (
-            granularMixture::readSpecies(properties),
-            properties.subDict("species")
-        )
-    );
     const word& fine = species[0].name;
     const word& coarse = species[1].name;
-    const scalar phiMin = properties.getOrDefault<scalar>("phiMin", 0.05);
+    const scalar phiMin = granularMixture::readPhiMin(properties);
 
     // Time: the latest of the case (or of its processor directories when
     // the case ran decomposed and was not reconstructed), or the one given

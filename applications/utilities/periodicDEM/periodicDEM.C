@@ -57,6 +57,7 @@ Description
 #include "OSspecific.H"
 
 #include "demDictionary.H"
+#include "granularMixture.H"
 
 #include <stdexcept>
 
@@ -84,25 +85,31 @@ sdf::dem::CellRunSettings readSettings
 
     sdf::dem::CellRunSettings s;
 
-    // Species and composition
-    const dictionary& speciesDict = properties.subDict("species");
+    // Species (granularMixture's reader) and composition
+    const List<granularSpecies> declared
+    (
+        granularMixture::readSpecies(properties)
+    );
     const dictionary& composition = dict.subDict("composition");
     for (const word& name : composition.toc())
     {
-        if (!speciesDict.isDict(name))
+        const granularSpecies* found = nullptr;
+        for (const granularSpecies& sp : declared)
+        {
+            if (sp.name == name)
+            {
+                found = &sp;
+            }
+        }
+        if (!found)
         {
             FatalIOErrorInFunction(composition)
                 << "Species '" << name << "' of 'composition' is not declared"
                 << " in constant/granularProperties; declared: "
-                << speciesDict.toc() << nl << exit(FatalIOError);
+                << properties.subDict("species").toc() << nl
+                << exit(FatalIOError);
         }
-        const dictionary& sd = speciesDict.subDict(name);
-        s.species.push_back
-        ({
-            name,
-            sd.get<scalar>("d"),
-            sd.get<scalar>("rho")
-        });
+        s.species.push_back({name, found->d, found->rho});
         s.volumeFractions.push_back(composition.get<scalar>(name));
     }
     if (s.species.empty())
