@@ -18,3 +18,33 @@ copy_case()
     rm -rf "$to/constant/polyMesh"
     true
 }
+
+# kill_after_first_condition CASE LOG: run calibrateGranularMixture -noFit on
+# CASE in the background (output to LOG), kill it (kill -9) once its first
+# condition is done, and print how many conditions calibration.h5 holds then
+kill_after_first_condition()
+{
+    local dir="$1" log="$2"
+    calibrateGranularMixture -case "$dir" -noFit > "$log" 2>&1 &
+    local pid=$! i
+    for i in $(seq 1 600)
+    do
+        grep -q "done in" "$log" 2>/dev/null && break
+        sleep 0.05
+    done
+    kill -9 "$pid" 2>/dev/null
+    wait "$pid" 2>/dev/null
+    h5ls "$dir/constant/calibration.h5/conditions" 2>/dev/null | wc -l
+}
+
+# check_resumed_rerun LOG STORED TOTAL: the rerun's log LOG skipped exactly
+# the STORED conditions and ran the other TOTAL - STORED
+check_resumed_rerun()
+{
+    local log="$1" stored="$2" total="$3" skipped ran
+    skipped=$(grep -c "^skipping .*(already in calibration.h5)" "$log")
+    ran=$(grep -c "done in" "$log")
+    echo "rerun after $stored stored conditions: $skipped skipped, $ran run"
+    [ "$skipped" -eq "$stored" ] && [ "$ran" -eq $((total - stored)) ] \
+        || { echo "rerun repeated or missed conditions"; return 1; }
+}

@@ -66,26 +66,13 @@ test_calibration_resume()
     copy_calibration_case "$dir"
     calibrateGranularMixture -case "$ref" -noFit > "$ref/log" 2>&1 || { tail -20 "$ref/log"; return 1; }
 
-    calibrateGranularMixture -case "$dir" -noFit > "$dir/log.1" 2>&1 &
-    local pid=$! i
-    for i in $(seq 1 600)
-    do
-        grep -q "done in" "$dir/log.1" 2>/dev/null && break
-        sleep 0.05
-    done
-    kill -9 "$pid" 2>/dev/null
-    wait "$pid" 2>/dev/null
     local stored
-    stored=$(h5ls "$dir/constant/calibration.h5/conditions" 2>/dev/null | wc -l)
+    stored=$(kill_after_first_condition "$dir" "$dir/log.1")
     echo "killed after $stored stored conditions"
     [ "$stored" -ge 1 ] && [ "$stored" -lt 8 ] || { echo "kill did not land mid-run"; return 1; }
 
     calibrateGranularMixture -case "$dir" -noFit > "$dir/log.2" 2>&1 || { tail -20 "$dir/log.2"; return 1; }
-    local skipped ran
-    skipped=$(grep -c "^skipping .*(already in calibration.h5)" "$dir/log.2")
-    ran=$(grep -c "done in" "$dir/log.2")
-    echo "rerun: $skipped skipped, $ran run"
-    [ "$skipped" -eq "$stored" ] && [ "$ran" -eq $((8 - stored)) ] || { echo "rerun repeated or missed conditions"; return 1; }
+    check_resumed_rerun "$dir/log.2" "$stored" 8 || return 1
 
     dump_conditions "$ref/constant/calibration.h5" > "$ref/conditions.txt"
     dump_conditions "$dir/constant/calibration.h5" > "$dir/conditions.txt"

@@ -44,24 +44,12 @@ test_calibration_concurrent()
     local killed="$workRoot/calibrationConcurrentKill"
     copy_calibration_case "$killed"
     foamDictionary -entry concurrentConditions -set 2 "$killed/system/calibrationDict" > /dev/null
-    calibrateGranularMixture -case "$killed" -noFit > "$killed/log.1" 2>&1 &
-    local pid=$! i
-    for i in $(seq 1 600)
-    do
-        grep -q "done in" "$killed/log.1" 2>/dev/null && break
-        sleep 0.05
-    done
-    kill -9 "$pid" 2>/dev/null
-    wait "$pid" 2>/dev/null
     local stored
-    stored=$(h5ls "$killed/constant/calibration.h5/conditions" 2>/dev/null | wc -l)
+    stored=$(kill_after_first_condition "$killed" "$killed/log.1")
     [ "$stored" -ge 1 ] && [ "$stored" -lt 8 ] || { echo "kill did not land mid-run ($stored stored)"; return 1; }
     calibrateGranularMixture -case "$killed" -noFit > "$killed/log.2" 2>&1 || { tail -20 "$killed/log.2"; return 1; }
-    local skipped ran
-    skipped=$(grep -c "^skipping .*(already in calibration.h5)" "$killed/log.2")
-    ran=$(grep -c "done in" "$killed/log.2")
-    echo "2 workers killed after $stored stored conditions; rerun: $skipped skipped, $ran run"
-    [ "$skipped" -eq "$stored" ] && [ "$ran" -eq $((8 - stored)) ] || { echo "rerun repeated or missed conditions"; return 1; }
+    echo "2 workers killed after $stored stored conditions"
+    check_resumed_rerun "$killed/log.2" "$stored" 8 || return 1
     same_conditions "$ref" "$killed"
 }
 
@@ -130,11 +118,7 @@ test_calibration_parallel_kill()
 
     calibrateGranularMixture -case "$dir" -noFit > "$dir/log.2" 2>&1 || { tail -20 "$dir/log.2"; return 1; }
     grep -q "Merged $stored conditions of $left processor stores" "$dir/log.2" || { echo "leftover stores not merged"; grep Merged "$dir/log.2"; return 1; }
-    local skipped ran
-    skipped=$(grep -c "^skipping .*(already in calibration.h5)" "$dir/log.2")
-    ran=$(grep -c "done in" "$dir/log.2")
-    echo "rerun: $skipped skipped, $ran run"
-    [ "$skipped" -eq "$stored" ] && [ "$ran" -eq $((8 - stored)) ] || { echo "rerun repeated or missed conditions"; return 1; }
+    check_resumed_rerun "$dir/log.2" "$stored" 8 || return 1
     ls "$dir/constant" | grep -q "processor" && { echo "processor stores left behind"; return 1; }
     same_conditions "$ref" "$dir"
 }
