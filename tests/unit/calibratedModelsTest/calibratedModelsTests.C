@@ -338,6 +338,21 @@ TEST(diffusivity, tabulatedRefusesIncompleteOrForeignFiles)
 {
     const auto D = [](double phi, double x, double T) { return T/phi + x; };
 
+    // Selecting the tabulated diffusivity of file (plus more coefficients)
+    const auto selectTabulated =
+        [](const std::string& file, const std::string& more = "")
+        {
+            return [file, more]
+            {
+                const std::string text
+                (
+                    "model calibrated; calibratedCoeffs { mode tabulated;"
+                    " calibrationFile " + file + "; " + more + "}"
+                );
+                diffusivityModel::New(dictOf(text.c_str()), *testMixturePtr);
+            };
+        };
+
     // A grid point missing (both seeds): named with the file
     syntheticTable incomplete;
     incomplete.D = D;
@@ -345,18 +360,7 @@ TEST(diffusivity, tabulatedRefusesIncompleteOrForeignFiles)
     incomplete.write(constantFile("calibrationIncomplete.h5"));
     expectFoamError
     (
-        []
-        {
-            diffusivityModel::New
-            (
-                dictOf
-                (
-                    "model calibrated; calibratedCoeffs { mode tabulated;"
-                    " calibrationFile calibrationIncomplete.h5; }"
-                ),
-                *testMixturePtr
-            );
-        },
+        selectTabulated("calibrationIncomplete.h5"),
         {"calibrationIncomplete.h5", "phi0.35_x0.4_T0.005", "missing"}
     );
 
@@ -367,18 +371,7 @@ TEST(diffusivity, tabulatedRefusesIncompleteOrForeignFiles)
     foreign.write(constantFile("calibrationForeign.h5"));
     expectFoamError
     (
-        []
-        {
-            diffusivityModel::New
-            (
-                dictOf
-                (
-                    "model calibrated; calibratedCoeffs { mode tabulated;"
-                    " calibrationFile calibrationForeign.h5; }"
-                ),
-                *testMixturePtr
-            );
-        },
+        selectTabulated("calibrationForeign.h5"),
         {"calibrationForeign.h5", "content"}
     );
 
@@ -389,27 +382,7 @@ TEST(diffusivity, tabulatedRefusesIncompleteOrForeignFiles)
     }
     for (const char* name : {"calibrationText.h5", "calibrationMissing.h5"})
     {
-        expectFoamError
-        (
-            [name]
-            {
-                diffusivityModel::New
-                (
-                    dictOf
-                    (
-                        (
-                            std::string
-                            (
-                                "model calibrated; calibratedCoeffs"
-                                " { mode tabulated; calibrationFile "
-                            ) + name + "; }"
-                        ).c_str()
-                    ),
-                    *testMixturePtr
-                );
-            },
-            {name}
-        );
+        expectFoamError(selectTabulated(name), {name});
     }
 
     // An unknown interpolation lists the valid ones
@@ -418,19 +391,7 @@ TEST(diffusivity, tabulatedRefusesIncompleteOrForeignFiles)
     good.write(constantFile("calibrationGood.h5"));
     expectFoamError
     (
-        []
-        {
-            diffusivityModel::New
-            (
-                dictOf
-                (
-                    "model calibrated; calibratedCoeffs { mode tabulated;"
-                    " calibrationFile calibrationGood.h5;"
-                    " interpolation cubic; }"
-                ),
-                *testMixturePtr
-            );
-        },
+        selectTabulated("calibrationGood.h5", "interpolation cubic; "),
         {"cubic", "linear", "steffen"}
     );
 }
