@@ -167,28 +167,22 @@ Eigen::MatrixX3d vectorAutocorrelation
     std::size_t end
 )
 {
-    const Eigen::Index particles = detail::checkFrameRange(frames, begin, end, "vectorAutocorrelation");
-    const std::size_t length = end - begin;
-    detail::PaddedFft fft(length, maxLag);
     std::vector<double> spectrum;
-    Eigen::MatrixX3d result(maxLag + 1, 3);
-    for (int c = 0; c < 3; ++c)
-    {
-        std::vector<double> sums(maxLag + 1, 0.0);
-        for (Eigen::Index p = 0; p < particles; ++p)
+    const detail::FrameSums s = detail::sumOverParticles
+    (
+        frames, maxLag, begin, end, "vectorAutocorrelation",
+        [&](detail::PaddedFft& fft, auto x, std::vector<double>& sums)
         {
-            fft.spectrum
-            (
-                [&](std::size_t t) { return frames[begin + t](p, c); },
-                spectrum
-            );
+            fft.spectrum(x, spectrum);
             fft.addLaggedSums(spectrum, spectrum, sums);
         }
-        normaliseByOrigins(sums, length, 1.0 / static_cast<double>(particles));
-        for (std::size_t k = 0; k <= maxLag; ++k)
-        {
-            result(k, c) = sums[k];
-        }
+    );
+    const double perParticle = 1.0 / static_cast<double>(s.particles);
+    Eigen::MatrixX3d result(maxLag + 1, 3);
+    for (std::size_t k = 0; k <= maxLag; ++k)
+    {
+        // per time origin (N - k of them) and per particle
+        result.row(k) = s.sums.row(k) * (perParticle / static_cast<double>(s.length - k));
     }
     return result;
 }
@@ -198,8 +192,9 @@ Eigen::MatrixX3d vectorAutocorrelation(const VectorFrames& frames, std::size_t m
     return vectorAutocorrelation(frames, maxLag, 0, frames.size());
 }
 
-std::vector<Eigen::MatrixX3d> blockVectorAutocorrelations
+std::vector<Eigen::MatrixX3d> blockEstimates
 (
+    FrameRangeEstimator estimate,
     const VectorFrames& frames,
     std::size_t maxLag,
     std::size_t blockCount
@@ -211,7 +206,7 @@ std::vector<Eigen::MatrixX3d> blockVectorAutocorrelations
         blockCount,
         [&](std::size_t begin, std::size_t end)
         {
-            return vectorAutocorrelation(frames, maxLag, begin, end);
+            return estimate(frames, maxLag, begin, end);
         }
     );
 }

@@ -60,10 +60,22 @@ Eigen::MatrixX3d vectorAutocorrelation
 //- vectorAutocorrelation over all frames.
 Eigen::MatrixX3d vectorAutocorrelation(const VectorFrames& frames, std::size_t maxLag);
 
-//- vectorAutocorrelation of each of blockCount contiguous, equal blocks of
-//  the trajectory: the independent estimates that Green-Kubo errors come from.
-std::vector<Eigen::MatrixX3d> blockVectorAutocorrelations
+//- An estimator of a per-component function of the lag from frames
+//  [begin, end) of a trajectory: vectorAutocorrelation, meanSquareDisplacement.
+using FrameRangeEstimator = Eigen::MatrixX3d (*)
 (
+    const VectorFrames& frames,
+    std::size_t maxLag,
+    std::size_t begin,
+    std::size_t end
+);
+
+//- estimate on each of blockCount contiguous, equal blocks of the trajectory
+//  (Statistics.hpp blockRange): the independent estimates that the errors of
+//  Green-Kubo and Einstein diffusivities come from.
+std::vector<Eigen::MatrixX3d> blockEstimates
+(
+    FrameRangeEstimator estimate,
     const VectorFrames& frames,
     std::size_t maxLag,
     std::size_t blockCount

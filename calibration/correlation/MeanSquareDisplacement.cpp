@@ -19,24 +19,20 @@ Eigen::MatrixX3d meanSquareDisplacement
     std::size_t end
 )
 {
-    const Eigen::Index particles = detail::checkFrameRange(frames, begin, end, "meanSquareDisplacement");
-    const std::size_t n = end - begin;
-    detail::PaddedFft fft(n, maxLag);
-    std::vector<double> spectrum;
-    std::vector<double> squares(n);
-    Eigen::MatrixX3d result = Eigen::MatrixX3d::Zero(maxLag + 1, 3);
-    for (int c = 0; c < 3; ++c)
-    {
-        std::vector<double> sums(maxLag + 1, 0.0);
-        for (Eigen::Index p = 0; p < particles; ++p)
+    std::vector<double> spectrum, products, squares;
+    const detail::FrameSums s = detail::sumOverParticles
+    (
+        frames, maxLag, begin, end, "meanSquareDisplacement",
+        [&](detail::PaddedFft& fft, auto x, std::vector<double>& sums)
         {
-            auto x = [&](std::size_t t) { return frames[begin + t](p, c); };
+            const std::size_t n = fft.seriesLength();
             // S2: the lagged products sum_t x(t) x(t+k).
-            std::vector<double> products(maxLag + 1, 0.0);
+            products.assign(maxLag + 1, 0.0);
             fft.spectrum(x, spectrum);
             fft.addLaggedSums(spectrum, spectrum, products);
             // S1: sum_{t=0}^{n-1-k} x(t)^2 + sum_{t=k}^{n-1} x(t)^2, built by
             // removing one end point per lag from the full sum.
+            squares.resize(n);
             double total = 0.0;
             for (std::size_t t = 0; t < n; ++t)
             {
@@ -55,11 +51,12 @@ Eigen::MatrixX3d meanSquareDisplacement
                 sums[k] += head + tail - 2.0 * products[k];
             }
         }
-        for (std::size_t k = 0; k <= maxLag; ++k)
-        {
-            result(k, c) = sums[k]
-                / (static_cast<double>(n - k) * static_cast<double>(particles));
-        }
+    );
+    Eigen::MatrixX3d result(maxLag + 1, 3);
+    for (std::size_t k = 0; k <= maxLag; ++k)
+    {
+        result.row(k) = s.sums.row(k)
+            / (static_cast<double>(s.length - k) * static_cast<double>(s.particles));
     }
     // Lag 0 is exactly zero; remove the FFT round-off there.
     result.row(0).setZero();
@@ -71,33 +68,14 @@ Eigen::MatrixX3d meanSquareDisplacement(const VectorFrames& frames, std::size_t 
     return meanSquareDisplacement(frames, maxLag, 0, frames.size());
 }
 
-std::vector<Eigen::MatrixX3d> blockMeanSquareDisplacements
-(
-    const VectorFrames& frames,
-    std::size_t maxLag,
-    std::size_t blockCount
-)
-{
-    return forEachBlock
-    (
-        frames.size(),
-        blockCount,
-        [&](std::size_t begin, std::size_t end)
-        {
-            return meanSquareDisplacement(frames, maxLag, begin, end);
-        }
-    );
-}
-
 EinsteinFit fitEinsteinSlope
 (
     const std::vector<double>& times,
     const std::vector<double>& msd,
-    double fitStart,
-    double fitEnd,
-    int dimensions
+    const EinsteinWindow& window
 )
 {
+    const auto [fitStart, fitEnd, dimensions] = window;
     if (times.size() != msd.size())
     {
         throw std::invalid_argument("fitEinsteinSlope: times and msd differ in length");
@@ -143,9 +121,7 @@ EinsteinResult einsteinDiffusivity
 (
     const std::vector<double>& times,
     const std::vector<std::vector<double>>& blockMsd,
-    double fitStart,
-    double fitEnd,
-    int dimensions
+    const EinsteinWindow& window
 )
 {
     if (blockMsd.size() < 2)
@@ -161,14 +137,14 @@ EinsteinResult einsteinDiffusivity
         {
             throw std::invalid_argument("einsteinDiffusivity: a block's MSD does not match the time grid");
         }
-        perBlock.push_back(fitEinsteinSlope(times, msd, fitStart, fitEnd, dimensions).diffusivity);
+        perBlock.push_back(fitEinsteinSlope(times, msd, window).diffusivity);
         for (std::size_t k = 0; k < times.size(); ++k)
         {
             result.meanMsd[k] += msd[k] / static_cast<double>(blockMsd.size());
         }
     }
     result.diffusivity = meanAndStandardError(perBlock);
-    result.fitOfMean = fitEinsteinSlope(times, result.meanMsd, fitStart, fitEnd, dimensions);
+    result.fitOfMean = fitEinsteinSlope(times, result.meanMsd, window);
     return result;
 }
 

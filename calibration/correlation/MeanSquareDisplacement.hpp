@@ -30,23 +30,26 @@ Eigen::MatrixX3d meanSquareDisplacement
     std::size_t end
 );
 
+//- meanSquareDisplacement over all frames; per block of the trajectory:
+//  blockEstimates(meanSquareDisplacement, ...) (FftCorrelator.hpp).
 Eigen::MatrixX3d meanSquareDisplacement
 (
     const VectorFrames& unwrappedPositions,
     std::size_t maxLag
 );
 
-//- MSD of each of blockCount contiguous equal blocks of the trajectory.
-std::vector<Eigen::MatrixX3d> blockMeanSquareDisplacements
-(
-    const VectorFrames& unwrappedPositions,
-    std::size_t maxLag,
-    std::size_t blockCount
-);
+//- Where the Einstein line is fitted: fitStart <= t <= fitEnd, and how many
+//  components the MSD sums: dimensions = 1 for one component, 3 for the sum of
+//  x, y, z (D = MSD / 6t).
+struct EinsteinWindow
+{
+    double fitStart = 0.0;
+    double fitEnd = 0.0;
+    int dimensions = 3;
+};
 
-//- Straight-line fit MSD(t) = slope t + intercept over fitStart <= t <= fitEnd
-//  (GSL gsl_fit_linear) and D = slope / (2 dimensions): dimensions = 1 for
-//  one component, 3 for the sum of x, y, z (D = MSD / 6t).
+//- Straight-line fit MSD(t) = slope t + intercept over the window (GSL
+//  gsl_fit_linear) and D = slope / (2 dimensions).
 struct EinsteinFit
 {
     double diffusivity = 0.0;
@@ -63,9 +66,7 @@ EinsteinFit fitEinsteinSlope
 (
     const std::vector<double>& times,
     const std::vector<double>& msd,
-    double fitStart,
-    double fitEnd,
-    int dimensions
+    const EinsteinWindow& window
 );
 
 struct EinsteinResult
@@ -79,14 +80,13 @@ struct EinsteinResult
 };
 
 //- blockMsd[b][k] at times[k]: one MSD (one component, or a sum of
-//  `dimensions` components) per independent block or replica.
+//  window.dimensions components) per independent block or replica, e.g. from
+//  blockEstimates(meanSquareDisplacement, ...).
 EinsteinResult einsteinDiffusivity
 (
     const std::vector<double>& times,
     const std::vector<std::vector<double>>& blockMsd,
-    double fitStart,
-    double fitEnd,
-    int dimensions
+    const EinsteinWindow& window
 );
 
 } // namespace sdf::correlation

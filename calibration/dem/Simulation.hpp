@@ -202,6 +202,15 @@ private:
     [[noreturn]] void overlapFailure(double maxOverlap) const;
     //- Velocity the temperatures and stresses are taken about (zero about the streaming).
     Eigen::Vector3d referenceMeanVelocity() const;
+    //- visit(i, c) for each particle i, in index order, with its velocity c about
+    //  referenceMeanVelocity() (the measurements' kinetic parts; defined, like the next,
+    //  in SimulationMeasurements.cpp, their only user).
+    template<class Visit>
+    void forEachFluctuation(Visit visit) const;
+    //- visit(k, i, j, r) for each listed pair k = (i, j) in contact, in pair order, with
+    //  r = x_i - x_j (minimum image) (the measurements' contact parts).
+    template<class Visit>
+    void forEachContact(Visit visit) const;
     void rebuildNeighbourList();
     //- Rebuilds indexOfId_ from particles_.id; throws if the ids are not a permutation.
     void indexIds();

@@ -8,17 +8,34 @@
 namespace sdf::dem
 {
 
+namespace
+{
+
+//- sum_i 1/2 m_i |v_i|^2 of one kind of motion: mass and velocity, or inertia and
+//  angular velocity.
+double kineticEnergy
+(
+    const ParticleArray& m,
+    const ParticleArray& vx,
+    const ParticleArray& vy,
+    const ParticleArray& vz
+)
+{
+    double e = 0;
+    for (std::size_t i = 0; i < m.size(); ++i)
+    {
+        e += 0.5*m[i]*(vx[i]*vx[i] + vy[i]*vy[i] + vz[i]*vz[i]);
+    }
+    return e;
+}
+
+} // namespace
+
 Eigen::Vector3d Simulation::meanVelocity() const
 {
-    const Particles& p = particles_;
-    Eigen::Vector3d momentum = Eigen::Vector3d::Zero();
     double mass = 0;
-    for (std::size_t i = 0; i < p.size(); ++i)
-    {
-        momentum += p.mass[i]*Eigen::Vector3d(p.vx[i], p.vy[i], p.vz[i]);
-        mass += p.mass[i];
-    }
-    return mass > 0 ? Eigen::Vector3d(momentum/mass) : Eigen::Vector3d::Zero();
+    for (const double m : particles_.mass) mass += m;
+    return mass > 0 ? Eigen::Vector3d(totalMomentum()/mass) : Eigen::Vector3d::Zero();
 }
 
 Eigen::Vector3d Simulation::referenceMeanVelocity() const
@@ -37,59 +54,21 @@ Eigen::Vector3d Simulation::fluctuatingVelocity(int i) const
     return c;
 }
 
-std::vector<double> Simulation::speciesTemperatures() const
+template<class Visit>
+void Simulation::forEachFluctuation(Visit visit) const
 {
-    const int nSpecies = int(species_.size());
-    std::vector<double> sum(nSpecies, 0.0);
-    std::vector<int> count(nSpecies, 0);
     const Eigen::Vector3d mean = referenceMeanVelocity();
     for (std::size_t i = 0; i < particles_.size(); ++i)
     {
-        const int s = particles_.species[i];
-        sum[s] += (fluctuatingVelocity(int(i)) - mean).squaredNorm();
-        ++count[s];
+        const Eigen::Vector3d c = fluctuatingVelocity(int(i)) - mean;
+        visit(i, c);
     }
-    for (int s = 0; s < nSpecies; ++s) sum[s] = count[s] ? sum[s]/count[s] : 0.0;
-    return sum;
 }
 
-double Simulation::temperature() const
-{
-    const Eigen::Vector3d mean = referenceMeanVelocity();
-    double sum = 0;
-    for (std::size_t i = 0; i < particles_.size(); ++i)
-    {
-        sum += (fluctuatingVelocity(int(i)) - mean).squaredNorm();
-    }
-    return particles_.size() ? sum/particles_.size() : 0.0;
-}
-
-double Simulation::translationalKineticEnergy() const
+template<class Visit>
+void Simulation::forEachContact(Visit visit) const
 {
     const Particles& p = particles_;
-    double e = 0;
-    for (std::size_t i = 0; i < p.size(); ++i)
-    {
-        e += 0.5*p.mass[i]*(p.vx[i]*p.vx[i] + p.vy[i]*p.vy[i] + p.vz[i]*p.vz[i]);
-    }
-    return e;
-}
-
-double Simulation::rotationalKineticEnergy() const
-{
-    const Particles& p = particles_;
-    double e = 0;
-    for (std::size_t i = 0; i < p.size(); ++i)
-    {
-        e += 0.5*p.inertia[i]*(p.wx[i]*p.wx[i] + p.wy[i]*p.wy[i] + p.wz[i]*p.wz[i]);
-    }
-    return e;
-}
-
-double Simulation::elasticEnergy() const
-{
-    const Particles& p = particles_;
-    double e = 0;
     const std::vector<int>& f = list_.first();
     const std::vector<int>& s = list_.second();
     for (std::size_t k = 0; k < list_.size(); ++k)
@@ -98,16 +77,67 @@ double Simulation::elasticEnergy() const
         const int i = f[k], j = s[k];
         double dx = p.x[i] - p.x[j], dy = p.y[i] - p.y[j], dz = p.z[i] - p.z[j], dvx = 0;
         box_.minimumImage(dx, dy, dz, dvx);
-        const double delta = p.radius[i] + p.radius[j] - std::sqrt(dx*dx + dy*dy + dz*dz);
-        const PairCoefficients& c = law_.pair(p.species[i], p.species[j]);
-        e += law_.normalElasticEnergy(c, delta);
-        const double ft2 = history_[k].ft[0]*history_[k].ft[0]
-            + history_[k].ft[1]*history_[k].ft[1] + history_[k].ft[2]*history_[k].ft[2];
-        if (ft2 > 0 && delta > 0)
-        {
-            e += 0.5*ft2/law_.tangentialStiffness(c, delta);
-        }
+        visit(k, i, j, Eigen::Vector3d(dx, dy, dz));
     }
+}
+
+std::vector<double> Simulation::speciesTemperatures() const
+{
+    const int nSpecies = int(species_.size());
+    std::vector<double> sum(nSpecies, 0.0);
+    std::vector<int> count(nSpecies, 0);
+    forEachFluctuation
+    (
+        [&](std::size_t i, const Eigen::Vector3d& c)
+        {
+            const int s = particles_.species[i];
+            sum[s] += c.squaredNorm();
+            ++count[s];
+        }
+    );
+    for (int s = 0; s < nSpecies; ++s) sum[s] = count[s] ? sum[s]/count[s] : 0.0;
+    return sum;
+}
+
+double Simulation::temperature() const
+{
+    double sum = 0;
+    forEachFluctuation([&](std::size_t, const Eigen::Vector3d& c) { sum += c.squaredNorm(); });
+    return particles_.size() ? sum/particles_.size() : 0.0;
+}
+
+double Simulation::translationalKineticEnergy() const
+{
+    const Particles& p = particles_;
+    return kineticEnergy(p.mass, p.vx, p.vy, p.vz);
+}
+
+double Simulation::rotationalKineticEnergy() const
+{
+    const Particles& p = particles_;
+    return kineticEnergy(p.inertia, p.wx, p.wy, p.wz);
+}
+
+double Simulation::elasticEnergy() const
+{
+    const Particles& p = particles_;
+    double e = 0;
+    forEachContact
+    (
+        [&](std::size_t k, int i, int j, const Eigen::Vector3d& r)
+        {
+            const double delta = p.radius[i] + p.radius[j]
+                - std::sqrt(r.x()*r.x() + r.y()*r.y() + r.z()*r.z());
+            const PairCoefficients& c = law_.pair(p.species[i], p.species[j]);
+            e += law_.normalElasticEnergy(c, delta);
+            const double ft2 = history_[k].ft[0]*history_[k].ft[0]
+                + history_[k].ft[1]*history_[k].ft[1] + history_[k].ft[2]*history_[k].ft[2];
+            if (ft2 > 0 && delta > 0)
+            {
+                e += 0.5*ft2/law_.tangentialStiffness(c, delta);
+            }
+        }
+    );
     walls_.addElasticEnergy(p, law_, e);
     return e;
 }
@@ -131,24 +161,22 @@ StressSplit Simulation::stressSplit() const
     J.nSpecies = nSpecies;
     J.kinetic.assign(nSpecies, Eigen::Matrix3d::Zero());
     J.configurational.assign(numberOfSpeciesPairs(nSpecies), Eigen::Matrix3d::Zero());
-    const Eigen::Vector3d mean = referenceMeanVelocity();
-    for (std::size_t i = 0; i < p.size(); ++i)
-    {
-        const Eigen::Vector3d c = fluctuatingVelocity(int(i)) - mean;
-        J.kinetic[p.species[i]] += p.mass[i]*c*c.transpose();
-    }
-    const std::vector<int>& f = list_.first();
-    const std::vector<int>& s = list_.second();
-    for (std::size_t k = 0; k < list_.size(); ++k)
-    {
-        if (!history_[k].touching) continue;
-        const int i = f[k], j = s[k];
-        double dx = p.x[i] - p.x[j], dy = p.y[i] - p.y[j], dz = p.z[i] - p.z[j], dvx = 0;
-        box_.minimumImage(dx, dy, dz, dvx);
-        const Eigen::Vector3d F(pfx_[k], pfy_[k], pfz_[k]);
-        const Eigen::Vector3d r(dx, dy, dz);
-        J.configurational[speciesPairIndex(p.species[i], p.species[j], nSpecies)] += F*r.transpose();
-    }
+    forEachFluctuation
+    (
+        [&](std::size_t i, const Eigen::Vector3d& c)
+        {
+            J.kinetic[p.species[i]] += p.mass[i]*c*c.transpose();
+        }
+    );
+    forEachContact
+    (
+        [&](std::size_t k, int i, int j, const Eigen::Vector3d& r)
+        {
+            const Eigen::Vector3d F(pfx_[k], pfy_[k], pfz_[k]);
+            J.configurational[speciesPairIndex(p.species[i], p.species[j], nSpecies)]
+                += F*r.transpose();
+        }
+    );
     return J;
 }
 
@@ -156,22 +184,17 @@ Eigen::Matrix3d Simulation::totalStress() const
 {
     const Particles& p = particles_;
     Eigen::Matrix3d J = Eigen::Matrix3d::Zero();
-    const Eigen::Vector3d mean = referenceMeanVelocity();
-    for (std::size_t i = 0; i < p.size(); ++i)
-    {
-        const Eigen::Vector3d c = fluctuatingVelocity(int(i)) - mean;
-        J += p.mass[i]*c*c.transpose();
-    }
-    const std::vector<int>& f = list_.first();
-    const std::vector<int>& s = list_.second();
-    for (std::size_t k = 0; k < list_.size(); ++k)
-    {
-        if (!history_[k].touching) continue;
-        const int i = f[k], j = s[k];
-        double dx = p.x[i] - p.x[j], dy = p.y[i] - p.y[j], dz = p.z[i] - p.z[j], dvx = 0;
-        box_.minimumImage(dx, dy, dz, dvx);
-        J += Eigen::Vector3d(pfx_[k], pfy_[k], pfz_[k])*Eigen::Vector3d(dx, dy, dz).transpose();
-    }
+    forEachFluctuation
+    (
+        [&](std::size_t i, const Eigen::Vector3d& c) { J += p.mass[i]*c*c.transpose(); }
+    );
+    forEachContact
+    (
+        [&](std::size_t k, int, int, const Eigen::Vector3d& r)
+        {
+            J += Eigen::Vector3d(pfx_[k], pfy_[k], pfz_[k])*r.transpose();
+        }
+    );
     return J;
 }
 

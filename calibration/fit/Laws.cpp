@@ -55,6 +55,28 @@ Eigen::VectorXd logRegression
     return solution.allFinite() ? solution : Eigen::VectorXd();
 }
 
+// A law's start from logRegression over its first `columns` parameters, parameter 0
+// being the prefactor (regressed as its logarithm): the fallback's values for the
+// parameters the regression does not give, and for all of them when it gives none.
+Eigen::VectorXd logRegressionStart
+(
+    const std::vector<Observation>& data,
+    int columns,
+    const std::function<void(const Condition&, Eigen::RowVectorXd&)>& regressors,
+    const std::function<double(const Condition&)>& knownFactor,
+    Eigen::VectorXd fallback
+)
+{
+    const Eigen::VectorXd solution = logRegression(data, columns, regressors, knownFactor);
+    if (solution.size() != columns)
+    {
+        return fallback;
+    }
+    fallback(0) = std::exp(solution(0));
+    fallback.segment(1, columns - 1) = solution.tail(columns - 1);
+    return fallback;
+}
+
 } // namespace
 
 double carnahanStarlingG0(double phi)
@@ -81,25 +103,18 @@ Eigen::VectorXd SeedPowerLaw::gradient(const Condition& c, const Eigen::VectorXd
 
 Eigen::VectorXd SeedPowerLaw::initialParameters(const std::vector<Observation>& data) const
 {
-    const Eigen::VectorXd solution = logRegression
+    Eigen::VectorXd papersValues(4);
+    papersValues << 6.0, 1.0, 1.0, -1.5;
+    return logRegressionStart
     (
         data, 4,
         [](const Condition& c, Eigen::RowVectorXd& row)
         {
             row << 1.0, std::log1p(c.x), std::log(c.T), std::log(c.phi);
         },
-        [](const Condition&) { return 1.0; }
+        [](const Condition&) { return 1.0; },
+        papersValues
     );
-    Eigen::VectorXd start(4);
-    if (solution.size() == 4)
-    {
-        start << std::exp(solution(0)), solution(1), solution(2), solution(3);
-    }
-    else
-    {
-        start << 6.0, 1.0, 1.0, -1.5;   // the paper's values
-    }
-    return start;
 }
 
 // ----------------------------------------------------- kineticTheoryGroups
@@ -134,15 +149,15 @@ Eigen::VectorXd KineticTheoryGroupsLaw::initialParameters
     const std::vector<Observation>& data
 ) const
 {
-    const Eigen::VectorXd solution = logRegression
+    Eigen::VectorXd fallback(2);
+    fallback << std::sqrt(M_PI) / 16.0, 0.0;
+    return logRegressionStart
     (
         data, 1,
         [](const Condition&, Eigen::RowVectorXd& row) { row << 1.0; },
-        kineticShape
+        kineticShape,
+        fallback
     );
-    Eigen::VectorXd start(2);
-    start << (solution.size() == 1 ? std::exp(solution(0)) : std::sqrt(M_PI) / 16.0), 0.0;
-    return start;
 }
 
 // ------------------------------------------------------------ sieving laws
@@ -172,25 +187,18 @@ Eigen::VectorXd SievingPowerLaw::gradient(const Condition& c, const Eigen::Vecto
 
 Eigen::VectorXd SievingPowerLaw::initialParameters(const std::vector<Observation>& data) const
 {
-    const Eigen::VectorXd solution = logRegression
+    Eigen::VectorXd fallback(3);
+    fallback << 1.0, 0.0, 0.0;
+    return logRegressionStart
     (
         data, 2,
         [](const Condition& c, Eigen::RowVectorXd& row)
         {
             row << 1.0, std::log(c.phi);
         },
-        [this](const Condition& c) { return kineticScale(c); }
+        [this](const Condition& c) { return kineticScale(c); },
+        fallback
     );
-    Eigen::VectorXd start(3);
-    if (solution.size() == 2)
-    {
-        start << std::exp(solution(0)), solution(1), 0.0;
-    }
-    else
-    {
-        start << 1.0, 0.0, 0.0;
-    }
-    return start;
 }
 
 // ---------------------------------------------- sievingCompositionPowerLaw
@@ -217,25 +225,18 @@ Eigen::VectorXd SievingCompositionPowerLaw::initialParameters
     const std::vector<Observation>& data
 ) const
 {
-    const Eigen::VectorXd solution = logRegression
+    Eigen::VectorXd fallback(3);
+    fallback << 1.0, 0.0, 1.0;
+    return logRegressionStart
     (
         data, 3,
         [](const Condition& c, Eigen::RowVectorXd& row)
         {
             row << 1.0, std::log(c.phi), std::log(c.x);
         },
-        [this](const Condition& c) { return kineticScale(c); }
+        [this](const Condition& c) { return kineticScale(c); },
+        fallback
     );
-    Eigen::VectorXd start(3);
-    if (solution.size() == 3)
-    {
-        start << std::exp(solution(0)), solution(1), solution(2);
-    }
-    else
-    {
-        start << 1.0, 0.0, 1.0;
-    }
-    return start;
 }
 
 // ----------------------------------------------------------- by name

@@ -40,6 +40,27 @@ inline Packing packedCell
     return packing;
 }
 
+//- Linear spring-dashpot contacts of k_n = 2e3 N/m (t_c ~ 6e-5 s for mm grains, overlaps
+//  well below 1 % of d at the tests' speeds) on one thread, not driven (nve).
+inline SimulationSettings softContacts(double restitution, double friction)
+{
+    SimulationSettings s;
+    s.contact.restitution = restitution;
+    s.contact.friction = friction;
+    s.contact.normalStiffness = 2e3;
+    s.threads = 1;
+    return s;
+}
+
+//- softContacts in a Lees-Edwards cell sheared at shearRate.
+inline SimulationSettings shearedCell(double shearRate, double restitution, double friction)
+{
+    SimulationSettings s = softContacts(restitution, friction);
+    s.mode = CellMode::leesEdwards;
+    s.shearRate = shearRate;
+    return s;
+}
+
 inline double totalEnergy(const Simulation& sim)
 {
     return sim.translationalKineticEnergy() + sim.rotationalKineticEnergy() + sim.elasticEnergy();

@@ -3,6 +3,7 @@
 // atomically and readable. (The 5 % comparison with Chapman-Enskog needs ~100 mean free
 // times and runs in benchmarks/demTransport.)
 #include "CellRun.hpp"
+#include "TestCells.hpp"
 
 #include "io/Hdf5File.hpp"
 
@@ -23,12 +24,8 @@ CellRunSettings diluteGas()
     s.volumeFractions = {1.0};
     s.particles = 250;
     s.solidsFraction = 0.05;
-    s.simulation.mode = CellMode::nve;
+    s.simulation = test::softContacts(1.0, 0.0);   // an elastic gas, not driven
     s.simulation.targetTemperature = 0.03;
-    s.simulation.contact.restitution = 1.0;
-    s.simulation.contact.friction = 0.0;
-    s.simulation.contact.normalStiffness = 2e3;
-    s.simulation.threads = 1;
     s.equilibrationTime = 0.005;
     s.samplingTime = 0.16;     // ~12 mean free times
     s.sampleEvery = 50;

@@ -14,13 +14,7 @@ TEST(Checkpoint, ResumedRunIsBitwiseIdentical)
 {
     const auto species = test::binary(2.0);
     Packing packing = test::packedCell(species, {300, 40}, 0.45, 0.0, 80.0, 12);
-    SimulationSettings s;
-    s.contact.restitution = 0.7;
-    s.contact.friction = 0.5;
-    s.contact.normalStiffness = 2e3;
-    s.mode = CellMode::leesEdwards;
-    s.shearRate = 80.0;
-    s.threads = 1;
+    const SimulationSettings s = test::shearedCell(80.0, 0.7, 0.5);
 
     Simulation reference(species, s, packing.particles, packing.box);
     reference.run(1200);
@@ -64,13 +58,8 @@ TEST(Checkpoint, CellRunResumedGivesTheUninterruptedResult)
     s.volumeFractions = {0.6, 0.4};
     s.particles = 320;
     s.solidsFraction = 0.45;
-    s.simulation.mode = CellMode::leesEdwards;
-    s.simulation.shearRate = 80;
-    s.simulation.contact.restitution = 0.7;
-    s.simulation.contact.friction = 0.5;
-    s.simulation.contact.normalStiffness = 2e3;
+    s.simulation = test::shearedCell(80, 0.7, 0.5);
     s.simulation.timeStep = 1e-6;
-    s.simulation.threads = 1;
     s.equilibrationTime = 0.002;
     s.samplingTime = 0.004;
     s.sampleEvery = 10;

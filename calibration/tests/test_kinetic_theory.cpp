@@ -12,12 +12,7 @@ TEST(ElasticGas, CollisionFrequencyAndPressureMatchEnskogAtPhi01)
     const auto species = test::mono();
     const double phi = 0.1, T = 0.03, T1 = T/3;
     Packing packing = test::packedCell(species, {400}, phi, T, 0, 31);
-    SimulationSettings s;
-    s.contact.restitution = 1.0;
-    s.contact.friction = 0.0;
-    s.contact.normalStiffness = 2e3;   // t_c ~ 6e-5 s, overlaps ~0.3 % of d
-    s.mode = CellMode::nve;
-    s.threads = 1;
+    const SimulationSettings s = test::softContacts(1.0, 0.0);   // overlaps ~0.3 % of d
     Simulation sim(species, s, packing.particles, packing.box);
     sim.run(5000);
     sim.enableCollisionStatistics(1e-12, 1e-3, 10);

@@ -11,13 +11,7 @@ TEST(LeesEdwards, LinearProfileMomentumAndSteadyTemperature)
     const auto species = test::binary(2.0);
     const double shearRate = 100.0;
     Packing packing = test::packedCell(species, {400, 50}, 0.45, 0.0, shearRate, 5);
-    SimulationSettings s;
-    s.contact.restitution = 0.7;
-    s.contact.friction = 0.3;
-    s.contact.normalStiffness = 2e3;
-    s.mode = CellMode::leesEdwards;
-    s.shearRate = shearRate;
-    s.threads = 1;
+    const SimulationSettings s = test::shearedCell(shearRate, 0.7, 0.3);
     Simulation sim(species, s, packing.particles, packing.box);
     const std::size_t n0 = sim.particles().size();
     const double ly = sim.box().ly;
@@ -132,14 +126,8 @@ TEST(LeesEdwards, MillionStepsKeepEveryParticleAndMomentum)
     const auto species = test::binary(2.0);
     const double shearRate = 100.0;
     Packing packing = test::packedCell(species, {130, 16}, 0.45, 0.0, shearRate, 23);
-    SimulationSettings s;
-    s.contact.restitution = 0.7;
-    s.contact.friction = 0.5;
-    s.contact.normalStiffness = 2e3;
-    s.mode = CellMode::leesEdwards;
-    s.shearRate = shearRate;
+    SimulationSettings s = test::shearedCell(shearRate, 0.7, 0.5);
     s.timeStep = 1e-6;
-    s.threads = 1;
     Simulation sim(species, s, packing.particles, packing.box);
     const std::size_t n0 = sim.particles().size();
     auto peculiarMomentum = [](const Simulation& x)

@@ -84,13 +84,7 @@ TEST(NeighbourList, NoContactMissedDuringShearedRun)
     // every touching pair found by brute force must be touching in the engine's list
     const auto species = test::binary(2.0);
     Packing packing = test::packedCell(species, {300, 40}, 0.45, 0.0, 50.0, 21);
-    SimulationSettings s;
-    s.contact.restitution = 0.7;
-    s.contact.friction = 0.3;
-    s.contact.normalStiffness = 2e3;
-    s.mode = CellMode::leesEdwards;
-    s.shearRate = 50.0;
-    s.threads = 1;
+    const SimulationSettings s = test::shearedCell(50.0, 0.7, 0.3);
     Simulation sim(species, s, packing.particles, packing.box);
     for (int block = 0; block < 20; ++block)
     {

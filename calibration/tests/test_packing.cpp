@@ -38,35 +38,41 @@ double bruteForceMaxOverlap(const Packing& p)
     return worst;
 }
 
+//- n particles of the binary mixture of this size ratio and these solids volume fractions
+//  packed at phi: checks phi and the overlaps.
+Packing checkedBinaryPacking
+(
+    double ratio,
+    const std::vector<double>& volumeFractions,
+    int n,
+    double phi,
+    std::uint64_t seed
+)
+{
+    const auto species = test::binary(ratio);
+    PackingSettings ps;
+    ps.solidsFraction = phi;
+    ps.counts = countsFromVolumeFractions(species, volumeFractions, n);
+    ps.seed = seed;
+    const Packing p = makePacking(species, ps);
+    EXPECT_NEAR(solidsFraction(p), phi, 1e-12);
+    EXPECT_LT(bruteForceMaxOverlap(p), ps.overlapTolerance*1.0001);
+    EXPECT_EQ(int(p.particles.size()), ps.counts[0] + ps.counts[1]);
+    return p;
+}
+
 } // namespace
 
 TEST(Packing, BinaryTwoToOneAtPhi060)
 {
-    const auto species = test::binary(2.0);
-    const auto counts = countsFromVolumeFractions(species, {0.6, 0.4}, 400);
-    PackingSettings ps;
-    ps.solidsFraction = 0.6;
-    ps.counts = counts;
-    ps.seed = 3;
-    const Packing p = makePacking(species, ps);
-    EXPECT_NEAR(solidsFraction(p), 0.6, 1e-12);
-    EXPECT_LT(bruteForceMaxOverlap(p), ps.overlapTolerance*1.0001);
-    EXPECT_EQ(int(p.particles.size()), counts[0] + counts[1]);
+    const Packing p = checkedBinaryPacking(2.0, {0.6, 0.4}, 400, 0.6, 3);
     std::cout << "phi 0.6, 2:1, N = " << p.particles.size() << ": " << p.relaxationSteps
               << " relaxation steps, max overlap " << 100*bruteForceMaxOverlap(p) << " %\n";
 }
 
 TEST(Packing, BinaryFourToOneAtPhi050)
 {
-    const auto species = test::binary(4.0);
-    const auto counts = countsFromVolumeFractions(species, {0.5, 0.5}, 700);
-    PackingSettings ps;
-    ps.solidsFraction = 0.5;
-    ps.counts = counts;
-    ps.seed = 5;
-    const Packing p = makePacking(species, ps);
-    EXPECT_NEAR(solidsFraction(p), 0.5, 1e-12);
-    EXPECT_LT(bruteForceMaxOverlap(p), ps.overlapTolerance*1.0001);
+    const Packing p = checkedBinaryPacking(4.0, {0.5, 0.5}, 700, 0.5, 5);
     std::cout << "phi 0.5, 4:1, N = " << p.particles.size() << ": " << p.relaxationSteps
               << " relaxation steps\n";
 }

@@ -40,12 +40,8 @@ RunResult shearedRun
         for (int i = 0; i < n; ++i) order[i] = (i*97) % n;   // 97 and 340 are coprime
         packing.particles.reorder(order);
     }
-    SimulationSettings s;
-    s.contact.restitution = 0.7;
-    s.contact.friction = 0.5;
-    s.contact.normalStiffness = 2e3;
-    s.mode = thermostatted ? CellMode::thermostatted : CellMode::leesEdwards;
-    s.shearRate = 80.0;
+    SimulationSettings s = test::shearedCell(80.0, 0.7, 0.5);
+    if (thermostatted) s.mode = CellMode::thermostatted;
     s.targetTemperature = 0.01;
     s.threads = threads;
     s.renumberEvery = renumberEvery;

@@ -11,13 +11,7 @@ TEST(StressSplit, PartsSumToTotalToRoundOff)
     const auto species = test::binary(2.0);
     const double shearRate = 100.0;
     Packing packing = test::packedCell(species, {300, 40}, 0.5, 0.0, shearRate, 9);
-    SimulationSettings s;
-    s.contact.restitution = 0.7;
-    s.contact.friction = 0.4;
-    s.contact.normalStiffness = 2e3;
-    s.mode = CellMode::leesEdwards;
-    s.shearRate = shearRate;
-    s.threads = 1;
+    const SimulationSettings s = test::shearedCell(shearRate, 0.7, 0.4);
     Simulation sim(species, s, packing.particles, packing.box);
     int checked = 0;
     sim.run(4000, [&](const Simulation& x)
@@ -46,11 +40,7 @@ TEST(StressSplit, SymmetricForFrictionlessContacts)
     // central forces: the configurational tensor is symmetric
     const auto species = test::binary(2.0);
     Packing packing = test::packedCell(species, {300, 40}, 0.5, 0.01, 0, 4);
-    SimulationSettings s;
-    s.contact.restitution = 0.9;
-    s.contact.friction = 0.0;
-    s.contact.normalStiffness = 2e3;
-    s.threads = 1;
+    const SimulationSettings s = test::softContacts(0.9, 0.0);
     Simulation sim(species, s, packing.particles, packing.box);
     sim.run(500);
     const Eigen::Matrix3d J = sim.totalStress();

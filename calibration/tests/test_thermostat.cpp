@@ -11,13 +11,9 @@ TEST(Thermostat, InelasticCellHeldAtTargetTemperature)
     const auto species = test::binary(2.0);
     const double target = 0.02;   // m^2/s^2, sum of the three components
     Packing packing = test::packedCell(species, {300, 40}, 0.3, 0.5*target, 0, 13);
-    SimulationSettings s;
-    s.contact.restitution = 0.8;
-    s.contact.friction = 0.3;
-    s.contact.normalStiffness = 2e3;
+    SimulationSettings s = test::softContacts(0.8, 0.3);
     s.mode = CellMode::thermostatted;
     s.targetTemperature = target;
-    s.threads = 1;
     Simulation sim(species, s, packing.particles, packing.box);
     sim.run(3000);      // equilibrate
     sim.enableCollisionStatistics(1e-12, 1e-4, 40);

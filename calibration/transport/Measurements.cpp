@@ -37,6 +37,38 @@ const typename Map::mapped_type& entry(const Map& map, const std::string& key, c
     return it->second;
 }
 
+//- A multiple-tau correlator's state as the checkpoint entries <key>Reals<suffix> and
+//  <key>Integers<suffix>, and back.
+template<class Correlator>
+void saveCorrelator
+(
+    io::Checkpoint& c,
+    const std::string& key,
+    const std::string& suffix,
+    const Correlator& correlator
+)
+{
+    const correlation::MultipleTauState state = correlator.exportState();
+    c.vectors[key + "Reals" + suffix] = state.reals;
+    c.integerVectors[key + "Integers" + suffix] = state.integers;
+}
+
+template<class Correlator>
+void loadCorrelator
+(
+    const io::Checkpoint& c,
+    const std::string& key,
+    const std::string& suffix,
+    const std::string& source,
+    Correlator& correlator
+)
+{
+    correlation::MultipleTauState state;
+    state.reals = entry(c.vectors, key + "Reals" + suffix, source);
+    state.integers = entry(c.integerVectors, key + "Integers" + suffix, source);
+    correlator.importState(state);
+}
+
 } // namespace
 
 SamplingPlan::SamplingPlan(const CellRunSettings& settings, double dt)
@@ -154,10 +186,7 @@ void VelocityAutocorrelation::save(io::Checkpoint& c) const
 {
     for (std::size_t s = 0; s < correlators_.size(); ++s)
     {
-        const std::string k = std::to_string(s);
-        const correlation::MultipleTauState st = correlators_[s].exportState();
-        c.vectors["cellRun_vacfReals" + k] = st.reals;
-        c.integerVectors["cellRun_vacfIntegers" + k] = st.integers;
+        saveCorrelator(c, "cellRun_vacf", std::to_string(s), correlators_[s]);
     }
 }
 
@@ -165,11 +194,7 @@ void VelocityAutocorrelation::load(const io::Checkpoint& c, const std::string& f
 {
     for (std::size_t s = 0; s < correlators_.size(); ++s)
     {
-        const std::string k = std::to_string(s);
-        correlation::MultipleTauState st;
-        st.reals = entry(c.vectors, "cellRun_vacfReals" + k, f);
-        st.integers = entry(c.integerVectors, "cellRun_vacfIntegers" + k, f);
-        correlators_[s].importState(st);
+        loadCorrelator(c, "cellRun_vacf", std::to_string(s), f, correlators_[s]);
     }
 }
 
@@ -266,7 +291,10 @@ void MeanSquareDisplacementMeasurement::finish(CellRunResult& result, long) cons
         const std::size_t nFrames = frames_[s].size();
         if (members_[s].empty() || nFrames < 8*nBlocks) continue;
         const std::size_t maxLag = nFrames/nBlocks/2;
-        const auto blockMsd = correlation::blockMeanSquareDisplacements(frames_[s], maxLag, nBlocks);
+        const auto blockMsd = correlation::blockEstimates
+        (
+            correlation::meanSquareDisplacement, frames_[s], maxLag, nBlocks
+        );
         const double frameInterval = framesEvery_*plan_.sampleInterval;
         std::vector<double> times(maxLag + 1);
         for (std::size_t k = 0; k <= maxLag; ++k) times[k] = k*frameInterval;
@@ -282,7 +310,7 @@ void MeanSquareDisplacementMeasurement::finish(CellRunResult& result, long) cons
         }
         const auto einstein = correlation::einsteinDiffusivity
         (
-            times, series, 0.4*times.back(), times.back(), comp == 1 ? 1 : 3
+            times, series, {0.4*times.back(), times.back(), comp == 1 ? 1 : 3}
         );
         SpeciesTransport& st = result.species[s];
         st.diffusivityMsd = einstein.diffusivity;
@@ -361,18 +389,13 @@ void StressAutocorrelation::closeBlock()
 void StressAutocorrelation::save(io::Checkpoint& c) const
 {
     c.vectors["cellRun_meanStress"] = stressSum_;
-    const correlation::MultipleTauState ss = correlator_.exportState();
-    c.vectors["cellRun_stressReals"] = ss.reals;
-    c.integerVectors["cellRun_stressIntegers"] = ss.integers;
+    saveCorrelator(c, "cellRun_stress", "", correlator_);
 }
 
 void StressAutocorrelation::load(const io::Checkpoint& c, const std::string& f)
 {
     stressSum_ = entry(c.vectors, "cellRun_meanStress", f);
-    correlation::MultipleTauState ss;
-    ss.reals = entry(c.vectors, "cellRun_stressReals", f);
-    ss.integers = entry(c.integerVectors, "cellRun_stressIntegers", f);
-    correlator_.importState(ss);
+    loadCorrelator(c, "cellRun_stress", "", f, correlator_);
 }
 
 void StressAutocorrelation::finish(CellRunResult& result, long samples) const

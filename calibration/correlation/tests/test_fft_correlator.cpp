@@ -124,7 +124,7 @@ TEST(FftCorrelator, VectorAutocorrelationAveragesParticlesAndComponents)
         }
     }
     // Blocks: each block equals the correlation of its own frame range.
-    const auto blocks = blockVectorAutocorrelations(frames, maxLag, 3);
+    const auto blocks = blockEstimates(vectorAutocorrelation, frames, maxLag, 3);
     ASSERT_EQ(blocks.size(), 3u);
     EXPECT_LT((blocks[1] - vectorAutocorrelation(frames, maxLag, 100, 200)).cwiseAbs().maxCoeff(), 1e-14);
     const auto mean = componentSeries(blocks, -1);

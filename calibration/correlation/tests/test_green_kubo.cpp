@@ -42,7 +42,7 @@ TEST(GreenKubo, OrnsteinUhlenbeckDiffusivityByGreenKuboAndMsd)
     const std::size_t blocks = 10;
 
     const std::size_t maxLag = 400;   // 40 tau
-    const auto vacf = blockVectorAutocorrelations(trajectory.velocities, maxLag, blocks);
+    const auto vacf = blockEstimates(vectorAutocorrelation, trajectory.velocities, maxLag, blocks);
     const std::vector<double> times = uniformTimes(maxLag + 1, ou.dt);
     const GreenKuboResult gk = greenKubo(times, componentSeries(vacf, -1));
 
@@ -65,7 +65,7 @@ TEST(GreenKubo, OrnsteinUhlenbeckDiffusivityByGreenKuboAndMsd)
     }
 
     const std::size_t msdLag = 800;   // 80 tau; fit 10..80 tau, intercept absorbs -2 D tau
-    const auto msdBlocks = blockMeanSquareDisplacements(trajectory.positions, msdLag, blocks);
+    const auto msdBlocks = blockEstimates(meanSquareDisplacement, trajectory.positions, msdLag, blocks);
     std::vector<std::vector<double>> totalMsd;
     for (const Eigen::MatrixX3d& m : msdBlocks)
     {
@@ -77,7 +77,7 @@ TEST(GreenKubo, OrnsteinUhlenbeckDiffusivityByGreenKuboAndMsd)
         totalMsd.push_back(sum);
     }
     const EinsteinResult einstein = einsteinDiffusivity(
-        uniformTimes(msdLag + 1, ou.dt), totalMsd, 10.0 * ou.tau, 80.0 * ou.tau, 3);
+        uniformTimes(msdLag + 1, ou.dt), totalMsd, {10.0 * ou.tau, 80.0 * ou.tau, 3});
     EXPECT_GT(einstein.diffusivity.standardError, 0.0);
     EXPECT_NEAR(einstein.diffusivity.value, exact, 3.0 * einstein.diffusivity.standardError);
     EXPECT_NEAR(einstein.diffusivity.value / ou.continuumDiffusivity(), 1.0, 0.02);
@@ -108,16 +108,16 @@ TEST(GreenKubo, ReportedErrorsMatchTheSpreadOverReplicas)
         ou.samples = 8000;
         ou.seed = 1000 + r;
         const auto trajectory = makeOuTrajectory(ou);
-        const auto vacf = blockVectorAutocorrelations(trajectory.velocities, 200, 8);
+        const auto vacf = blockEstimates(vectorAutocorrelation, trajectory.velocities, 200, 8);
         gkEstimates.push_back(greenKubo(uniformTimes(201, ou.dt), componentSeries(vacf, -1)).integral);
 
-        const auto msd = blockMeanSquareDisplacements(trajectory.positions, 300, 8);
+        const auto msd = blockEstimates(meanSquareDisplacement, trajectory.positions, 300, 8);
         std::vector<std::vector<double>> x;
         for (const auto& m : msd)
         {
             x.push_back(std::vector<double>(m.col(0).data(), m.col(0).data() + m.rows()));
         }
-        msdEstimates.push_back(einsteinDiffusivity(uniformTimes(301, ou.dt), x, 5.0, 15.0, 1).diffusivity);
+        msdEstimates.push_back(einsteinDiffusivity(uniformTimes(301, ou.dt), x, {5.0, 15.0, 1}).diffusivity);
     }
     for (const auto* estimates : {&gkEstimates, &msdEstimates})
     {

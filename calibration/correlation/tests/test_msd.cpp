@@ -83,11 +83,11 @@ TEST(Msd, EinsteinFitRecoversAKnownLine)
     {
         msd[k] = 6.0 * 0.25 * t[k] - 0.3;   // D = 0.25, 3 dimensions
     }
-    const EinsteinFit fit = fitEinsteinSlope(t, msd, 2.0, 9.0, 3);
+    const EinsteinFit fit = fitEinsteinSlope(t, msd, {2.0, 9.0, 3});
     EXPECT_NEAR(fit.diffusivity, 0.25, 1e-13);
     EXPECT_NEAR(fit.intercept, -0.3, 1e-12);
     EXPECT_NEAR(fit.fitStandardError, 0.0, 1e-12);
     EXPECT_EQ(fit.points, 71u);
-    EXPECT_NEAR(fitEinsteinSlope(t, msd, 2.0, 9.0, 1).diffusivity, 0.75, 1e-13);
-    EXPECT_THROW(fitEinsteinSlope(t, msd, 2.0, 2.1, 3), std::invalid_argument);
+    EXPECT_NEAR(fitEinsteinSlope(t, msd, {2.0, 9.0, 1}).diffusivity, 0.75, 1e-13);
+    EXPECT_THROW(fitEinsteinSlope(t, msd, {2.0, 2.1, 3}), std::invalid_argument);
 }

@@ -114,7 +114,7 @@ TEST(MultipleTau, AgreesWithTheFftCorrelatorOnOrnsteinUhlenbeck)
     ASSERT_EQ(mt.blocks().size(), blocks);
     const GreenKuboResult gkStreamed = greenKubo(mt.blocks(), ou.dt, -1);
     EXPECT_GE(gkStreamed.times.back(), 40.0 * ou.tau);
-    const auto fftBlocks = blockVectorAutocorrelations(trajectory.velocities, 400, blocks);
+    const auto fftBlocks = blockEstimates(vectorAutocorrelation, trajectory.velocities, 400, blocks);
     const GreenKuboResult gkFft = greenKubo(uniformTimes(401, ou.dt), componentSeries(fftBlocks, -1));
     ASSERT_TRUE(gkStreamed.plateauFound);
     EXPECT_NEAR(gkStreamed.integral.value, gkFft.integral.value, 0.01 * gkFft.integral.value);

@@ -7,10 +7,12 @@
 
 #include "fit/ConstitutiveLaw.hpp"
 #include "fit/FitData.hpp"
+#include "fit/Laws.hpp"
 
 #include <Eigen/Core>
 
 #include <cmath>
+#include <cstdint>
 #include <random>
 #include <vector>
 
@@ -54,6 +56,22 @@ inline std::vector<Observation> synthetic
         data.push_back(Observation{c, measured, relativeNoise * std::abs(measured)});
     }
     return data;
+}
+
+//- The seed's values of SeedPowerLaw (its eq 15): D = 6 (1 + x) T phi^-1.5.
+inline Eigen::VectorXd seedPowerLawValues()
+{
+    Eigen::VectorXd values(4);
+    values << 6.0, 1.0, 1.0, -1.5;
+    return values;
+}
+
+//- A table from SeedPowerLaw with the seed's values over the seed-like envelope, 3 %
+//  noise drawn from a generator seeded with seed.
+inline std::vector<Observation> seedPowerLawData(std::uint64_t seed)
+{
+    std::mt19937_64 engine(seed);
+    return synthetic(SeedPowerLaw{}, seedPowerLawValues(), seedLikeEnvelope(), 0.03, engine);
 }
 
 } // namespace sdf::fit::test

@@ -12,17 +12,21 @@
 
 using namespace sdf::fit;
 using sdf::fit::test::seedLikeEnvelope;
+using sdf::fit::test::seedPowerLawData;
 using sdf::fit::test::synthetic;
 
 namespace
 {
 
-std::vector<Observation> seedData(std::uint64_t seed)
+//- One iteration from (1, 0, 0, 0), far from the seed's values: not converged.
+FitOptions oneIterationFromAFarStart()
 {
-    Eigen::VectorXd truth(4);
-    truth << 6.0, 1.0, 1.0, -1.5;
-    std::mt19937_64 engine(seed);
-    return synthetic(SeedPowerLaw{}, truth, seedLikeEnvelope(), 0.03, engine);
+    FitOptions options;
+    options.maxIterations = 1;
+    Eigen::VectorXd farStart(4);
+    farStart << 1.0, 0.0, 0.0, 0.0;
+    options.initialParameters = farStart;
+    return options;
 }
 
 void expectMessageNames(const std::string& message, const std::string& part)
@@ -34,12 +38,8 @@ void expectMessageNames(const std::string& message, const std::string& part)
 
 TEST(Failure, OneIterationFromAFarStartIsNotConverged)
 {
-    FitOptions options;
-    options.maxIterations = 1;
-    Eigen::VectorXd farStart(4);
-    farStart << 1.0, 0.0, 0.0, 0.0;
-    options.initialParameters = farStart;
-    const auto data = seedData(31);
+    const FitOptions options = oneIterationFromAFarStart();
+    const auto data = seedPowerLawData(31);
     const FitResult fit = fitLaw(SeedPowerLaw{}, data, options);
     EXPECT_FALSE(fit.converged());
     EXPECT_EQ(fit.status, FitStatus::maxIterationsReached);
@@ -66,7 +66,7 @@ TEST(Failure, UnidentifiableParametersAreASingularCovariance)
     // One coarse fraction only: (1 + x)^a is a constant that A absorbs, so
     // A and a cannot be told apart. The cost has a valley, the solver may
     // well stop in it; the fit must still be reported as failed.
-    auto data = seedData(32);
+    auto data = seedPowerLawData(32);
     for (Observation& o : data)
     {
         o.condition.x = 0.2;
@@ -103,19 +103,15 @@ TEST(Failure, StartWhereTheLawIsNotPositiveInLogSpace)
     Eigen::VectorXd negative(2);
     negative << -0.1, 0.0;
     options.initialParameters = negative;
-    const FitResult fit = fitLaw(KineticTheoryGroupsLaw{}, seedData(34), options);
+    const FitResult fit = fitLaw(KineticTheoryGroupsLaw{}, seedPowerLawData(34), options);
     EXPECT_EQ(fit.status, FitStatus::invalidLaw);
     expectMessageNames(fit.message, "row 0");
 }
 
 TEST(Failure, FailedFitIsNotWrittenToTheDictionary)
 {
-    FitOptions options;
-    options.maxIterations = 1;
-    Eigen::VectorXd farStart(4);
-    farStart << 1.0, 0.0, 0.0, 0.0;
-    options.initialParameters = farStart;
-    const FitResult failed = fitLaw(SeedPowerLaw{}, seedData(35), options);
+    const FitOptions options = oneIterationFromAFarStart();
+    const FitResult failed = fitLaw(SeedPowerLaw{}, seedPowerLawData(35), options);
     ASSERT_FALSE(failed.converged());
     std::ostringstream os;
     EXPECT_THROW
@@ -150,7 +146,7 @@ struct BrokenGradientLaw
 
 TEST(Failure, NonFiniteJacobianIsReported)
 {
-    const FitResult fit = fitLaw(BrokenGradientLaw{}, seedData(36));
+    const FitResult fit = fitLaw(BrokenGradientLaw{}, seedPowerLawData(36));
     EXPECT_FALSE(fit.converged());
     EXPECT_EQ(fit.status, FitStatus::nonFiniteResult);
     expectMessageNames(fit.message, "brokenGradient");
@@ -173,7 +169,7 @@ struct GradientBreaksAwayFromStartLaw : BrokenGradientLaw
 
 TEST(Failure, NonFiniteJacobianDuringTheIterationsIsReported)
 {
-    const FitResult fit = fitLaw(GradientBreaksAwayFromStartLaw{}, seedData(37));
+    const FitResult fit = fitLaw(GradientBreaksAwayFromStartLaw{}, seedPowerLawData(37));
     EXPECT_EQ(fit.status, FitStatus::nonFiniteResult);
     expectMessageNames(fit.message, "gradientBreaksAwayFromStart");
     expectMessageNames(fit.message, "gradient is not finite");

@@ -12,6 +12,7 @@
 
 using namespace sdf::fit;
 using sdf::fit::test::seedLikeEnvelope;
+using sdf::fit::test::seedPowerLawData;
 using sdf::fit::test::synthetic;
 
 namespace
@@ -61,10 +62,7 @@ TEST(ModelSelection, PicksKineticTheoryWhenItGeneratedTheData)
 
 TEST(ModelSelection, PicksTheSeedPowerLawWhenItGeneratedTheData)
 {
-    Eigen::VectorXd truth(4);
-    truth << 6.0, 1.0, 1.0, -1.5;
-    std::mt19937_64 engine(22);
-    const auto data = synthetic(SeedPowerLaw{}, truth, seedLikeEnvelope(), 0.03, engine);
+    const auto data = seedPowerLawData(22);
     for (const auto criterion : {InformationCriterion::AIC, InformationCriterion::BIC})
     {
         const ModelSelection s = selectBetweenTheDiffusivityLaws(data, criterion);
@@ -76,10 +74,7 @@ TEST(ModelSelection, PicksTheSeedPowerLawWhenItGeneratedTheData)
 TEST(ModelSelection, CriteriaAreTheDocumentedFormulas)
 {
     // Relative sigma: the common scale is estimated, so k + 1 parameters.
-    Eigen::VectorXd truth(4);
-    truth << 6.0, 1.0, 1.0, -1.5;
-    std::mt19937_64 engine(23);
-    const auto data = synthetic(SeedPowerLaw{}, truth, seedLikeEnvelope(), 0.03, engine);
+    const auto data = seedPowerLawData(23);
     const FitResult fit = fitLaw(SeedPowerLaw{}, data);
     ASSERT_TRUE(fit.converged());
     const double n = double(data.size());
