@@ -595,7 +595,7 @@ def update_docs(args, table, rows, facts, start):
         "(steps_long - steps_short) removes start-up and the final write. Our cost per "
         "species is the least-squares slope of the per-step cost over N = 1, 2, 4 species; "
         "the intercept is the per-step overhead that does not grow with the species "
-        "(Courant number, mixture diffusivity, outlet output). Both CPU time (user + sys of "
+        "(Courant number, mixture diffusivity; the cases list no function objects). Both CPU time (user + sys of "
         "the solver process, from `wait4`) and wall clock are measured; the table's headline "
         "is CPU time because on this shared machine the wall clock is inflated by the other "
         "users' work (the long runs were descheduled for up to half of their wall time, see "

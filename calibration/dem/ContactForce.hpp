@@ -161,7 +161,7 @@ SDF_DEM_ALWAYS_INLINE ContactResult evaluateContact
         // Coulomb limit on the magnitude of the total normal force, as LAMMPS' pair
         // granular: the linear dashpot makes it tensile at the end of a contact, where
         // mu max(fn, 0) (no friction) gave a 4-8 % lower D_yy of a sheared cell than
-        // LAMMPS (docs/dem.md, "Contact laws"); Hertz-Mindlin's fn is clamped at 0
+        // LAMMPS (docs/developer/dem-engine.md, "Contact laws"); Hertz-Mindlin's fn is clamped at 0
         const double limit = c.friction*std::abs(fn);
         const double mag2 = dot3(ftot, ftot);
         if (mag2 > limit*limit)

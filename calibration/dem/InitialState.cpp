@@ -207,7 +207,7 @@ Packing makePacking(const std::vector<Species>& species, const PackingSettings& 
     // Number the particles in slabs of y (the Lees-Edwards gradient direction, which the
     // shear does not mix): the force pass gives each thread a contiguous index range, so
     // with this order a thread's neighbours are mostly its own particles and few cache
-    // lines cross between cores at every step (docs/dem.md, Performance)
+    // lines cross between cores at every step (docs/developer/dem-engine.md, "Parallelism and performance")
     std::vector<int> order(out.size());
     std::iota(order.begin(), order.end(), 0);
     std::stable_sort

@@ -1,7 +1,7 @@
 // The table a constitutive law is fitted to: one row per DEM condition with
 // the measured transport coefficient and its standard error.
 //
-// Conventions (docs/equations.md): T is the granular temperature as the SUM
+// Conventions (docs/developer/equations.md): T is the granular temperature as the SUM
 // of the three components' mean square fluctuation velocity [m2/s2]; laws
 // from kinetic theory use T1 = T/3. x is the coarse fraction of the solids.
 #ifndef sdf_fit_FitData_hpp

@@ -1,7 +1,7 @@
 // The constitutive laws fitted to DEM transport coefficients. Each is a small
 // value type with the interface of ConstitutiveLaw.hpp; parameters are in the
 // order of parameterNames(). T is the sum of the three components (m2/s2),
-// T1 = T/3 the per-component value of kinetic theory (docs/equations.md).
+// T1 = T/3 the per-component value of kinetic theory (docs/developer/equations.md).
 #ifndef sdf_fit_Laws_hpp
 #define sdf_fit_Laws_hpp
 
@@ -82,7 +82,7 @@ struct SievingLawBase
 //    eta = E d^k sqrt(T1) phi^p (1 + beta x),  T1 = T/3,
 //  fitted parameters (E, p, beta), k = diameterPower fixed (not fitted).
 //  With k = 1 (default) eta is in m2/s with E dimensionless: the units the
-//  solver's kinetic-sieving flux needs (docs/equations.md). k = 2 is the form
+//  solver's kinetic-sieving flux needs (docs/developer/equations.md). k = 2 is the form
 //  E d^2 sqrt(T1), dimensionally consistent only if eta is measured per unit
 //  length (m3/s) or E carries 1/m: choose it to match how the Green-Kubo eta
 //  is normalised. Law name `sievingPowerLaw`; k is written to the dictionary.

@@ -1,6 +1,6 @@
 // Writer of constant/granularCoefficients: the chosen law of each calibrated
 // coefficient as an OpenFOAM dictionary, read by the solver's `calibrated`
-// models. Format with an example: docs/calibration-fit.md.
+// models. Format with an example: docs/developer/calibration-fit.md.
 #ifndef sdf_fit_OpenFOAMDictionary_hpp
 #define sdf_fit_OpenFOAMDictionary_hpp
 

@@ -1,5 +1,5 @@
 // Conversion of the engine's kinetic sieving coefficient into the m2/s the
-// solver's kinetic-sieving flux needs (docs/calibration-fit.md, "eta units").
+// solver's kinetic-sieving flux needs (docs/developer/calibration-fit.md, "eta units").
 //
 // The engine returns, per species i, the seed's eta_i (eqs 8-13): the
 // Green-Kubo integral of the autocorrelation of the xy component of

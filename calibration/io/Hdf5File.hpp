@@ -1,7 +1,7 @@
 // HDF5 files of segregationDegradationFoam calibration runs: typed access to
 // groups, attributes (double, int64, string) and 1-D / 2-D datasets over the
 // HDF5 C API, with every handle owned by RAII and every failure thrown as an
-// Hdf5Error naming the file and object. Layout of a run: docs/hdf5-layout.md.
+// Hdf5Error naming the file and object. Layout of a run: docs/developer/hdf5-layout.md.
 //
 //   sdf::io::AtomicFile out("run.h5");          // writes run.h5.tmp
 //   sdf::io::Group condition = out.root().createGroup("conditions/phi0.3");

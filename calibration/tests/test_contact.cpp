@@ -158,7 +158,7 @@ void expectRestitutionOverPhases(ImpactRun impact, ContactModel model, double e)
 // dt = dt_max/10 (t_c/500 linear, 0.02 t_Rayleigh Hertz), 7 phases of the contact start
 // within a step. At dt_max the dashpot force, which jumps at contact start and end, leaves
 // a phase-dependent error: up to 9 % for e = 0.1, 0.2 % (linear) / 2.4 % (Hertz) for
-// e = 0.5, below 0.4 % for e >= 0.9 (docs/dem.md).
+// e = 0.5, below 0.4 % for e >= 0.9 (docs/developer/dem-engine.md).
 TEST_P(Restitution, LinearHeadOnWithinOnePercent)
 {
     expectRestitutionOverPhases(collide, ContactModel::linearSpringDashpot, GetParam());

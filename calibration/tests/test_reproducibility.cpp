@@ -146,7 +146,7 @@ TEST(Reproducibility, DifferentSeedsDiffer)
 TEST(Reproducibility, ParticleArraysStartOnCacheLines)
 {
     // thread ranges start at multiples of particlesPerCacheLine; only with line-aligned
-    // arrays does that keep every cache line to one thread (docs/dem.md "Cache lines")
+    // arrays does that keep every cache line to one thread (docs/developer/dem-engine.md, "Threads")
     const Particles p = shearedRun(2, 5, 50, false, 20).particles;
     for (const ParticleArray* a : {&p.x, &p.ux, &p.vx, &p.wz, &p.fx, &p.tz, &p.invMass})
     {

@@ -126,7 +126,7 @@ std::string summary(const CellRunResult& result);
 
 //- Writes inputs, timings, T, R, D_i with errors, correlation functions, stress ACF terms
 //  and collision statistics to an HDF5 file, atomically (written to <path>.tmp and renamed:
-//  a failed run never leaves a half-written file under the final name). Layout: docs/dem.md.
+//  a failed run never leaves a half-written file under the final name). Layout: docs/developer/hdf5-layout.md.
 void writeCellRun(const CellRunResult& result, const std::string& path);
 
 } // namespace sdf::dem

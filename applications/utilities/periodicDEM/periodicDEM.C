@@ -14,7 +14,7 @@ Group
 Description
     Front door of the embedded DEM engine (calibration/): runs one periodic
     DEM cell in a case directory, prints a summary and writes
-    postProcessing/periodicDEM/<name>.h5 (layout: docs/hdf5-layout.md).
+    postProcessing/periodicDEM/<name>.h5 (layout: docs/developer/hdf5-layout.md).
 
     Species (d, rho) come from constant/granularProperties; the cell from
     system/periodicDEMDict:

@@ -31,6 +31,17 @@ Foam::calibratedLaw::modeNames
 });
 
 
+const Foam::wordList& Foam::calibratedLaw::coeffsKeys()
+{
+    static const wordList keys
+    ({
+        "mode", "file", "calibrationFile", "interpolation", "outsideEnvelope",
+        "runDEMMargin", "runDEMMaxPhi", "runDEMMinT"
+    });
+    return keys;
+}
+
+
 namespace
 {
 

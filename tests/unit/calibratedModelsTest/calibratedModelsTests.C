@@ -239,7 +239,7 @@ TEST(diffusivity, tabulatedReproducesPowerLaw)
         const volScalarField T1(uniformT(0.005));
         const scalar onGrid = Dexact(0.35, 0.4, 0.005);
         EXPECT_NEAR(Dtab->D(0, T1)()[0], onGrid, 1e-12*onGrid) << interpolation;
-        // The fine D is used for every species (docs/calibration.md)
+        // The fine D is used for every species (docs/user/calibration.md)
         EXPECT_NEAR(Dtab->D(1, T1)()[0], onGrid, 1e-12*onGrid) << interpolation;
 
         // Between grid points on every axis
@@ -620,6 +620,53 @@ TEST(kineticSieving, calibratedEtaDrift)
         0.5*2e-3*Foam::sqrt(T/3)*Foam::pow(0.4, -1.2)*(1 + 2*0.2);
 
     expectSievingDrift(W, eta, 1e-12);
+}
+
+TEST(calibrated, misspeltCoefficientIsRefused)
+{
+    // A misspelt key of calibratedCoeffs stops with the valid keys listed
+    expectFoamError
+    (
+        []
+        {
+            diffusivityModel::New
+            (
+                dictOf("model calibrated; calibratedCoeffs { outsideEnvelop clamp; }"),
+                *testMixturePtr
+            );
+        },
+        {"outsideEnvelop", "outsideEnvelope", "calibrationFile"}
+    );
+
+    const shearWithTemperature shear(1);
+    expectFoamError
+    (
+        [&shear]
+        {
+            kineticSievingModel::New
+            (
+                dictOf("model calibrated; calibratedCoeffs { Umn 1e-9; }"),
+                *testMixturePtr,
+                shear.flow()
+            );
+        },
+        {"Umn", "Umin"}
+    );
+
+    // Umin carries velocity dimensions when it states them
+    expectFoamError
+    (
+        [&shear]
+        {
+            kineticSievingModel::New
+            (
+                dictOf("model calibrated; calibratedCoeffs { Umin [0 2 -1 0 0 0 0] 1e-9; }"),
+                *testMixturePtr,
+                shear.flow()
+            );
+        },
+        {"Umin"}
+    );
 }
 
 // ************************************************************************* //

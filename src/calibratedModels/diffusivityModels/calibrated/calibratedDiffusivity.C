@@ -8,6 +8,7 @@
 
 #include "calibratedDiffusivity.H"
 #include "addToRunTimeSelectionTable.H"
+#include "modelCoeffs.H"
 
 namespace Foam
 {
@@ -25,7 +26,12 @@ Foam::diffusivityModels::calibrated::calibrated
     const granularMixture& mixture
 )
 :
-    diffusivityModel(typeName, dict, mixture),
+    diffusivityModel
+    (
+        typeName,
+        modelCoeffs::checked(dict, typeName, calibratedLaw::coeffsKeys()),
+        mixture
+    ),
     law_(mixture, "D", coeffs_)
 {}
 

@@ -8,6 +8,7 @@
 
 #include "calibratedKineticSieving.H"
 #include "addToRunTimeSelectionTable.H"
+#include "modelCoeffs.H"
 #include "surfaceInterpolate.H"
 
 namespace Foam
@@ -20,6 +21,20 @@ namespace kineticSievingModels
 }
 
 
+namespace
+{
+
+//- The calibrated law's entries and the floor Umin of |U|
+Foam::wordList calibratedSievingKeys()
+{
+    Foam::wordList keys(Foam::calibratedLaw::coeffsKeys());
+    keys.append("Umin");
+    return keys;
+}
+
+} // End anonymous namespace
+
+
 Foam::kineticSievingModels::calibrated::calibrated
 (
     const dictionary& dict,
@@ -27,10 +42,21 @@ Foam::kineticSievingModels::calibrated::calibrated
     const bulkFlowModel& bulkFlow
 )
 :
-    kineticSievingModel(typeName, dict, mixture),
+    kineticSievingModel
+    (
+        typeName,
+        modelCoeffs::checked
+        (
+            dict,
+            typeName,
+            calibratedSievingKeys()
+        ),
+        mixture
+    ),
     bulkFlow_(bulkFlow),
     law_(mixture, "eta", coeffs_),
-    Umin_(coeffs_.getOrDefault<scalar>("Umin", 1e-6)),
+    // Floor of |U| in ln|U| [m/s], default 1e-6 (as velocityGradient)
+    Umin_(modelCoeffs::getOrDefault(coeffs_, "Umin", dimVelocity, 1e-6).value()),
     etaGradLnUSf_
     (
         IOobject
