@@ -61,8 +61,9 @@ Foam::List<Foam::granularSpecies> Foam::granularMixture::readSpecies
 
         granularSpecies& s = species[i];
         s.name = names[i];
-        s.d = sd.get<scalar>("d");
-        s.rho = sd.get<scalar>("rho");
+        // A bare number in SI units, or with its dimensions
+        s.d = modelCoeffs::get(sd, "d", dimLength).value();
+        s.rho = modelCoeffs::get(sd, "rho", dimDensity).value();
 
         if (!(s.d > 0))
         {

@@ -101,3 +101,25 @@ test_silo_parallel()
     reconstructPar -latestTime -case "$parallel" > "$parallel/log.reconstructPar" 2>&1 || return 1
     python3 -m sdfoam.fieldStats "$parallel" compare "$serial" --tol 1e-8
 }
+
+# kinematic with dischargeRate beverloo and a Q of dischargeRate given: a
+# fatal error naming the entry that would be ignored, nothing written
+test_kinematic_unread_entry()
+{
+    local dir="$workRoot/kinematicUnreadEntry"
+    copy_case "$projectDir/tutorials/silo2D" "$dir"
+    : > "$dir/system/caseParameters"
+    foamDictionary -entry bulkFlow/kinematicCoeffs/Q -add 1e-4 "$dir/constant/granularProperties" > /dev/null
+    blockMesh -case "$dir" > "$dir/log.blockMesh" 2>&1 || return 1
+    cp -r "$dir/0.orig" "$dir/0"
+    if segregationDegradationFoam -case "$dir" > "$dir/log.solver" 2>&1
+    then
+        echo "an unread Q was accepted"; return 1
+    fi
+    sed -n '/FOAM FATAL/,/FOAM exiting/p' "$dir/log.solver" | head -8
+    grep -q "Entry 'Q' is not read with dischargeRate beverloo" "$dir/log.solver" || { echo "message does not name Q"; return 1; }
+    local written
+    written=$(find "$dir" -mindepth 1 -maxdepth 1 -type d -regextype posix-extended -regex '.*/[0-9.eE+-]+' ! -name 0 | head -1)
+    [ -z "$written" ] || { echo "a time directory was written: $written"; return 1; }
+    echo "clear fatal error naming Q, nothing written"
+}

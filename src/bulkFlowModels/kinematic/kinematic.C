@@ -75,6 +75,26 @@ void Foam::bulkFlowModels::kinematic::readDischargeRate()
 
     const word rateType(coeffs_.get<word>("dischargeRate"));
 
+    // Entries that only the other discharge rate reads are refused, not
+    // silently ignored
+    const wordList unread
+    (
+        rateType == "beverloo"
+      ? wordList({"Q", "fullOutletArea"})
+      : wordList({"beverlooCoeffs"})
+    );
+    for (const word& key : unread)
+    {
+        if (coeffs_.found(key, keyType::LITERAL))
+        {
+            FatalIOErrorInFunction(coeffs_)
+                << "Entry '" << key << "' is not read with dischargeRate "
+                << rateType << " (Q and fullOutletArea go with given;"
+                << " with beverloo, fullOutletArea belongs in beverlooCoeffs)"
+                << nl << exit(FatalIOError);
+        }
+    }
+
     if (rateType == "given")
     {
         Q_ = modelCoeffs::get(coeffs_, "Q", dimVolume/dimTime).value();

@@ -249,6 +249,18 @@ TEST(coefficients, speciesReadInOrderAndChecked)
     expectRefused("species { fine { d 0; rho 2500; } }", {"Non-positive diameter", "fine"});
     expectRefused("species { fine { d 1e-3; rho -1; } }", {"Non-positive density", "fine"});
     expectRefused("species { fine { d 1e-3; rho 2500; D 1; } }", {"'D'", "d rho"});
+
+    // d and rho may state their dimensions, which must then match
+    const List<granularSpecies> dimensioned
+    (
+        granularMixture::readSpecies
+        (
+            dictOf("species { fine { d [0 1 0 0 0 0 0] 1e-3; rho [1 -3 0 0 0 0 0] 2500; } }")
+        )
+    );
+    EXPECT_EQ(dimensioned[0].d, 1e-3);
+    EXPECT_EQ(dimensioned[0].rho, 2500);
+    expectRefused("species { fine { d [0 2 0 0 0 0 0] 1e-3; rho 2500; } }", {"'d'"});
 }
 
 
