@@ -18,7 +18,6 @@
 #include "Particles.hpp"
 
 #include <memory>
-#include <optional>
 #include <string>
 #include <vector>
 
@@ -58,8 +57,6 @@ public:
 
     //- Name written in messages and outputs (the built-ins: cellModeName of their mode).
     virtual std::string name() const = 0;
-    //- The built-in mode this driving is; none for a driving written outside the library.
-    virtual std::optional<CellMode> mode() const { return std::nullopt; }
 
     // --- velocity reference
     //- Shear rate of the streaming profile the periodic box carries (Lees-Edwards images,
@@ -87,7 +84,6 @@ class NoDriving : public Driving
 {
 public:
     std::string name() const override { return cellModeName(CellMode::nve); }
-    std::optional<CellMode> mode() const override { return CellMode::nve; }
 };
 
 //- Weak-coupling (Berendsen-type) velocity rescaling: after each step the fluctuating
@@ -100,7 +96,6 @@ public:
     VelocityRescalingThermostat(double targetTemperature, double relaxationTime, double timeStep);
 
     std::string name() const override { return cellModeName(CellMode::thermostatted); }
-    std::optional<CellMode> mode() const override { return CellMode::thermostatted; }
     bool beginForcePass(int nParticles, bool endsStep) override;
     void finishRange(const Particles& particles, int begin, int end) override;
     void afterStep(Particles& particles, int nThreads) override;
@@ -124,7 +119,6 @@ public:
     explicit LeesEdwardsShear(double shearRate) : shearRate_(shearRate) {}
 
     std::string name() const override { return cellModeName(CellMode::leesEdwards); }
-    std::optional<CellMode> mode() const override { return CellMode::leesEdwards; }
     double shearRate() const override { return shearRate_; }
     bool aboutStreamingVelocity() const override { return true; }
 
