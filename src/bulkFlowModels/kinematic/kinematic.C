@@ -8,6 +8,7 @@
 
 #include "kinematic.H"
 #include "scratchField.H"
+#include "openPatches.H"
 #include "addToRunTimeSelectionTable.H"
 #include "fvm.H"
 #include "fvc.H"
@@ -286,13 +287,9 @@ void Foam::bulkFlowModels::kinematic::solveVelocity()
         mesh.boundary().size(),
         zeroGradientFvPatchScalarField::typeName
     );
-    forAll(mesh.boundary(), patchi)
+    for (const label patchi : openPatches(mesh))
     {
-        const fvPatch& p = mesh.boundary()[patchi];
-        if (!p.coupled() && !isA<wallFvPatch>(p) && p.type() == "patch")
-        {
-            pTypes[patchi] = fixedValueFvPatchScalarField::typeName;
-        }
+        pTypes[patchi] = fixedValueFvPatchScalarField::typeName;
     }
     tmp<volScalarField> pKField
     (

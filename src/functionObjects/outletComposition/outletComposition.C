@@ -8,6 +8,7 @@
 
 #include "outletComposition.H"
 #include "granularMixture.H"
+#include "openPatches.H"
 #include "volFields.H"
 #include "surfaceFields.H"
 #include "OSspecific.H"
@@ -197,16 +198,7 @@ Foam::functionObjects::outletComposition::outletComposition
     }
     else
     {
-        DynamicList<label> patches;
-        forAll(mesh_.boundary(), patchi)
-        {
-            const fvPatch& p = mesh_.boundary()[patchi];
-            if (!p.coupled() && p.type() == "patch")
-            {
-                patches.append(patchi);
-            }
-        }
-        patches_.transfer(patches);
+        patches_ = openPatches(mesh_);
     }
 
     flows_.setSize(patches_.size(), scalarList(species_.size() + 1, Zero));
