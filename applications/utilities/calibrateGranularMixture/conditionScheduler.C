@@ -224,14 +224,9 @@ Foam::label Foam::runConditions
         {
             try
             {
-                sdf::store::appendCondition
+                settings.appendToStore
                 (
-                    store,
-                    settings.fine().name,
-                    settings.coarse().name,
-                    settings.settingsKey(),
-                    {c.name, c.phi, c.x, c.T, c.seed},
-                    f.result
+                    store, {c.name, c.phi, c.x, c.T, c.seed}, f.result
                 );
                 ++ran;
                 const double total = std::chrono::duration<double>

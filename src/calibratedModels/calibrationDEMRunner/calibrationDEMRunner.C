@@ -195,15 +195,7 @@ Foam::label Foam::calibrationDEMRunner::runCondition
         // condition
         try
         {
-            sdf::store::appendCondition
-            (
-                file_,
-                settings.fine().name,
-                settings.coarse().name,
-                settings.settingsKey(),
-                {name, phi, x, T, seed},
-                r
-            );
+            settings.appendToStore(file_, {name, phi, x, T, seed}, r);
         }
         catch (const std::exception& err)
         {

@@ -328,4 +328,18 @@ sdf::dem::CellRunSettings Foam::calibrationSettings::conditionSettings
 }
 
 
+void Foam::calibrationSettings::appendToStore
+(
+    const std::string& path,
+    const sdf::store::ConditionInputs& inputs,
+    const sdf::dem::CellRunResult& result
+) const
+{
+    sdf::store::appendCondition
+    (
+        path, fine_.name, coarse_.name, settingsKey_, inputs, result
+    );
+}
+
+
 // ************************************************************************* //
