@@ -123,3 +123,38 @@ test_kinematic_unread_entry()
     [ -z "$written" ] || { echo "a time directory was written: $written"; return 1; }
     echo "clear fatal error naming Q, nothing written"
 }
+
+# The outletComposition function object: re-run with -postProcess it keeps
+# the run's outlet.dat byte for byte and writes its own file beside it; a
+# 'patches' entry that matches no patch is a fatal error naming the entry
+test_outlet_composition_function_object()
+{
+    local dir="$workRoot/outletCompositionFO"
+    copy_case "$projectDir/tutorials/silo2D" "$dir"
+    : > "$dir/system/caseParameters"
+    foamDictionary -entry endTime -set 0.05 "$dir/system/controlDict" > /dev/null
+    foamDictionary -entry writeInterval -set 0.025 "$dir/system/controlDict" > /dev/null
+    blockMesh -case "$dir" > "$dir/log.blockMesh" 2>&1 || return 1
+    cp -r "$dir/0.orig" "$dir/0"
+    segregationDegradationFoam -case "$dir" > "$dir/log.solver" 2>&1 || { tail -20 "$dir/log.solver"; return 1; }
+    local out="$dir/postProcessing/outletComposition/0"
+    [ -s "$out/outlet.dat" ] || { echo "no outlet.dat"; return 1; }
+    cp "$out/outlet.dat" "$dir/outlet.run.dat"
+
+    segregationDegradationFoam -case "$dir" -postProcess > "$dir/log.postProcess" 2>&1 || { tail -20 "$dir/log.postProcess"; return 1; }
+    cmp -s "$out/outlet.dat" "$dir/outlet.run.dat" || { echo "post-processing changed the run's outlet.dat"; return 1; }
+    local extra
+    extra=$(find "$dir/postProcessing/outletComposition" -name 'outlet_*.dat' | head -1)
+    [ -n "$extra" ] && [ -s "$extra" ] || { echo "post-processing wrote no file of its own"; return 1; }
+    echo "run's outlet.dat untouched ($(grep -vc '^#' "$dir/outlet.run.dat") rows), post-processing wrote ${extra#"$dir"/}"
+
+    foamDictionary -entry functions/outletComposition/patches -set "(noSuchPatch)" "$dir/system/controlDict" > /dev/null
+    if segregationDegradationFoam -case "$dir" -postProcess -latestTime > "$dir/log.badPatches" 2>&1
+    then
+        echo "a 'patches' entry matching no patch was accepted"; return 1
+    fi
+    grep -q "'patches'" "$dir/log.badPatches" && grep -q "noSuchPatch" "$dir/log.badPatches" \
+        || { echo "the error does not name 'patches'"; tail -20 "$dir/log.badPatches"; return 1; }
+    cmp -s "$out/outlet.dat" "$dir/outlet.run.dat" || { echo "the failed run changed outlet.dat"; return 1; }
+    echo "patches (noSuchPatch) refused naming the entry; outlet.dat untouched"
+}
