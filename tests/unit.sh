@@ -17,3 +17,11 @@ test_unit_calibrated_models()
     blockMesh -case "$dir" > "$dir/log.blockMesh" 2>&1 || return 1
     calibratedModelsTest -case "$dir"
 }
+
+test_unit_breakage_models()
+{
+    local dir="$workRoot/unitBreakageCase"
+    rm -rf "$dir"; cp -r tests/unit/breakageCase "$dir"
+    blockMesh -case "$dir" > "$dir/log.blockMesh" 2>&1 || return 1
+    breakageModelsTest -case "$dir"
+}

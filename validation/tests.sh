@@ -17,3 +17,66 @@ test_convergence_study()
 {
     validation/convergenceStudy --no-docs --work "$workRoot/validation"
 }
+
+# Breakage on one closed cell (validation/breakageSingleCell): the class-edge
+# volumes of S = v^2 with uniform binary fragments, exact to 1e-12 (the
+# check's assertion)
+test_breakage_edge_volumes()
+{
+    local dir="$workRoot/breakageEdge"
+    rm -rf "$dir"; mkdir -p "$dir"
+    cp -r "$validationDir/breakageSingleCell" "$dir/"
+    "$dir/breakageSingleCell/Allrun" edge
+}
+
+# One implicit Euler step at S_max dt = 1e-3 .. 1e6 against a dense solve
+# (1e-8 per class), positive, solids + dust kept to 1e-12; then 100 and 200
+# steps against Reid's exact solution in time: first order in dt
+test_breakage_implicit_step()
+{
+    local dir="$workRoot/breakageImplicit" sdt
+    rm -rf "$dir"; mkdir -p "$dir"
+    cp -r "$validationDir/breakageSingleCell" "$dir/"
+    for sdt in 1e-3 1 1e3 1e6
+    do
+        "$dir/breakageSingleCell/Allrun" implicit --sdt "$sdt" || return 1
+    done
+    local e1 e2
+    e1=$("$dir/breakageSingleCell/Allrun" implicit --dt 0.01 --steps 100 -- --reid | sed -n 's/^reidResult //p' | awk '{print $2}')
+    e2=$("$dir/breakageSingleCell/Allrun" implicit --dt 0.005 --steps 200 -- --reid | sed -n 's/^reidResult //p' | awk '{print $2}')
+    [ -n "$e1" ] && [ -n "$e2" ] || { echo "no Reid comparison"; return 1; }
+    python3 -c "
+import math, sys
+e1, e2 = $e1, $e2
+p = math.log(e1/e2)/math.log(2)
+print('Reid: error %.3e (dt 0.01), %.3e (dt 0.005): order %.3f in dt' % (e1, e2, p))
+sys.exit(0 if 0.9 < p < 1.1 and e1 < 1e-3 else 1)"
+}
+
+# Ziff & McGrady (1985) on geometric grids of ratio 2, 2^(1/2), 2^(1/4):
+# volume kept to 1e-12 on each, class numbers and moments converging at an
+# order in ln r between 1.7 and 2.3; and the peer's grid (29 classes of
+# ratio 1.5): L1 error of the class numbers under 2 %
+test_breakage_ziff_mcgrady()
+{
+    local dir="$workRoot/breakageZiff"
+    rm -rf "$dir"; mkdir -p "$dir"
+    cp -r "$validationDir/breakageSingleCell" "$dir/"
+    local case="$dir/breakageSingleCell"
+    "$case/Allrun" ziff --ratio 1.5 --classes 29 -- --tol-l1 0.02 || return 1
+    "$case/Allrun" study > "$dir/log.study" || { cat "$dir/log.study"; return 1; }
+    grep "study:\|ziff: L1" "$dir/log.study"
+    python3 - "$case/results/ziffConvergence.dat" <<'PY'
+import math, sys
+rows = [list(map(float, l.split())) for l in open(sys.argv[1]) if not l.startswith("#")]
+ok = len(rows) == 3
+for a, b in zip(rows, rows[1:]):
+    for col in (1, 2, 3, 5):
+        p = math.log(abs(a[col]) / abs(b[col])) / math.log(math.log(a[0]) / math.log(b[0]))
+        ok = ok and 1.7 < p < 2.3
+for r in rows:
+    ok = ok and r[4] <= 1e-12
+ok = ok and rows[-1][1] < 0.02 and rows[-1][5] < 0.02
+sys.exit(0 if ok else 1)
+PY
+}

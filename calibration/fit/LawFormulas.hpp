@@ -1,4 +1,5 @@
-// The constitutive laws of the transport coefficients as plain formulas:
+// The constitutive laws of the transport coefficients (and of the collision
+// statistics the breakage rates need) as plain formulas:
 // inline functions of doubles, no Eigen, no library to link, so that the fit
 // library (Laws.cpp), the calibrated models and the solver's plain diffusivity
 // models (powerLaw, kineticTheory) evaluate one definition of each law.
@@ -73,6 +74,35 @@ inline double sievingCompositionPowerLaw
 )
 {
     return E*sievingScale(diameterPower, T, d)*std::pow(phi, p)*std::pow(x, q);
+}
+
+//- The kinetic collision rate sqrt(T1)/d [1/s]
+inline double collisionScale(double T, double d)
+{
+    return std::sqrt(perComponentTemperature(T))/d;
+}
+
+//- Collisions per unit time of one particle (breakage rates, fit/BreakageRate.hpp):
+//    omega = C (sqrt(T1)/d) phi g0(phi)^b (1 + alpha x)
+//  Enskog for a monodisperse elastic gas is omega = 4 n d^2 g0 sqrt(pi T1) =
+//  (24/sqrt(pi)) (sqrt(T1)/d) phi g0: C = 24/sqrt(pi) ~ 13.54, b = 1, alpha = 0.
+//  b lets dense or inelastic cells depart from Carnahan-Starling's g0, alpha takes the
+//  composition dependence of a species' partners.
+inline double collisionFrequencyGroups
+(
+    double C, double b, double alpha, double phi, double x, double T, double d
+)
+{
+    return C*collisionScale(T, d)*phi*std::pow(carnahanStarlingG0(phi), b)*(1.0 + alpha*x);
+}
+
+//- Mean mass-specific impact energy W = E/(m_i + m_j) of a particle's impacts [J/kg]
+//  (fit/BreakageRate.hpp):  Wmean = K T1 phi^c.
+//  An elastic gas at equilibrium (Maxwell-Boltzmann, dem.impact_energy) has
+//  <E> = m T1 for equal grains, so Wmean = T1/2: K = 1/2, c = 0.
+inline double impactEnergyGroups(double K, double c, double phi, double T)
+{
+    return K*perComponentTemperature(T)*std::pow(phi, c);
 }
 
 } // namespace sdf::fit::formulas

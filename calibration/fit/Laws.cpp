@@ -239,13 +239,88 @@ Eigen::VectorXd SievingCompositionPowerLaw::initialParameters
     );
 }
 
+// ------------------------------------------------- collisionFrequencyGroups
+
+double CollisionFrequencyGroupsLaw::evaluate(const Condition& c, const Eigen::VectorXd& p) const
+{
+    return formulas::collisionFrequencyGroups(p(0), p(1), p(2), c.phi, c.x, c.T, c.d);
+}
+
+Eigen::VectorXd CollisionFrequencyGroupsLaw::gradient
+(
+    const Condition& c,
+    const Eigen::VectorXd& p
+) const
+{
+    // Shape without C, so the derivative in C is right at C = 0 too.
+    const double g0 = formulas::carnahanStarlingG0(c.phi);
+    const double base = formulas::collisionScale(c.T, c.d)*c.phi*std::pow(g0, p(1));
+    const double composition = 1.0 + p(2)*c.x;
+    Eigen::VectorXd g(3);
+    g << base*composition,
+         p(0)*base*composition*std::log(g0),
+         p(0)*base*c.x;
+    return g;
+}
+
+Eigen::VectorXd CollisionFrequencyGroupsLaw::initialParameters
+(
+    const std::vector<Observation>& data
+) const
+{
+    Eigen::VectorXd enskog(3);
+    enskog << 24.0/std::sqrt(M_PI), 1.0, 0.0;
+    return logRegressionStart
+    (
+        data, 2,
+        [](const Condition& c, Eigen::RowVectorXd& row)
+        {
+            row << 1.0, std::log(formulas::carnahanStarlingG0(c.phi));
+        },
+        [](const Condition& c) { return formulas::collisionScale(c.T, c.d)*c.phi; },
+        enskog
+    );
+}
+
+// ------------------------------------------------------- impactEnergyGroups
+
+double ImpactEnergyGroupsLaw::evaluate(const Condition& c, const Eigen::VectorXd& p) const
+{
+    return formulas::impactEnergyGroups(p(0), p(1), c.phi, c.T);
+}
+
+Eigen::VectorXd ImpactEnergyGroupsLaw::gradient(const Condition& c, const Eigen::VectorXd& p) const
+{
+    const double shape = formulas::impactEnergyGroups(1.0, p(1), c.phi, c.T);
+    Eigen::VectorXd g(2);
+    g << shape, p(0)*shape*std::log(c.phi);
+    return g;
+}
+
+Eigen::VectorXd ImpactEnergyGroupsLaw::initialParameters(const std::vector<Observation>& data) const
+{
+    Eigen::VectorXd maxwellBoltzmann(2);
+    maxwellBoltzmann << 0.5, 0.0;
+    return logRegressionStart
+    (
+        data, 2,
+        [](const Condition& c, Eigen::RowVectorXd& row)
+        {
+            row << 1.0, std::log(c.phi);
+        },
+        [](const Condition& c) { return formulas::perComponentTemperature(c.T); },
+        maxwellBoltzmann
+    );
+}
+
 // ----------------------------------------------------------- by name
 
 const std::vector<std::string>& lawNames()
 {
     static const std::vector<std::string> names
     {
-        "kineticTheoryGroups", "powerLaw", "sievingCompositionPowerLaw", "sievingPowerLaw"
+        "collisionFrequencyGroups", "impactEnergyGroups", "kineticTheoryGroups", "powerLaw",
+        "sievingCompositionPowerLaw", "sievingPowerLaw"
     };
     return names;
 }
@@ -267,6 +342,14 @@ ConstitutiveLaw lawFromName(const std::string& name, int diameterPower)
     if (name == "sievingCompositionPowerLaw")
     {
         return SievingCompositionPowerLaw(diameterPower);
+    }
+    if (name == "collisionFrequencyGroups")
+    {
+        return CollisionFrequencyGroupsLaw{};
+    }
+    if (name == "impactEnergyGroups")
+    {
+        return ImpactEnergyGroupsLaw{};
     }
     std::string valid;
     for (const std::string& n : lawNames())

@@ -129,8 +129,49 @@ struct SievingCompositionPowerLaw : SievingLawBase
     Eigen::VectorXd initialParameters(const std::vector<Observation>& data) const;
 };
 
+//- Collision frequency per particle, in dimensionless groups (for breakage rates,
+//  fit/BreakageRate.hpp):
+//    omega = C (sqrt(T1)/d) phi g0(phi)^b (1 + alpha x),  T1 = T/3,  [1/s]
+//  parameters (C, b, alpha), all dimensionless; d is the diameter of the species whose
+//  particles' collisions are counted. Enskog's monodisperse elastic gas is
+//  C = 24/sqrt(pi) ~ 13.54, b = 1, alpha = 0. Law name `collisionFrequencyGroups`.
+struct CollisionFrequencyGroupsLaw
+{
+    std::string name() const { return "collisionFrequencyGroups"; }
+    std::string formula() const
+    {
+        return "C*sqrt(T/3)/d*phi*g0(phi)^b*(1 + alpha*x), g0 = (1 - phi/2)/(1 - phi)^3";
+    }
+    std::vector<std::string> parameterNames() const { return {"C", "b", "alpha"}; }
+    double evaluate(const Condition& c, const Eigen::VectorXd& p) const;
+    Eigen::VectorXd gradient(const Condition& c, const Eigen::VectorXd& p) const;
+    //- alpha = 0, (C, b) from a weighted regression of ln(y/(sqrt(T1) phi/d)) on
+    //  (1, ln g0).
+    Eigen::VectorXd initialParameters(const std::vector<Observation>& data) const;
+    std::vector<std::pair<std::string, double>> fixedEntries() const { return {}; }
+};
+
+//- Mean mass-specific impact energy of a particle's impacts, W = E/(m_i + m_j) with E
+//  = 0.5 m* g_n^2 the DEM's pair impact energy (fit/BreakageRate.hpp):
+//    Wmean = K T1 phi^c,  T1 = T/3,  [J/kg]
+//  parameters (K, c), dimensionless. An elastic gas at equilibrium (Maxwell-Boltzmann)
+//  has K = 1/2, c = 0; inelastic and sheared cells depart from it. Law name
+//  `impactEnergyGroups`.
+struct ImpactEnergyGroupsLaw
+{
+    std::string name() const { return "impactEnergyGroups"; }
+    std::string formula() const { return "K*(T/3)*phi^c"; }
+    std::vector<std::string> parameterNames() const { return {"K", "c"}; }
+    double evaluate(const Condition& c, const Eigen::VectorXd& p) const;
+    Eigen::VectorXd gradient(const Condition& c, const Eigen::VectorXd& p) const;
+    //- Weighted regression of ln(y/T1) on (1, ln phi): exact for noise-free data.
+    Eigen::VectorXd initialParameters(const std::vector<Observation>& data) const;
+    std::vector<std::pair<std::string, double>> fixedEntries() const { return {}; }
+};
+
 //- The law whose dictionary name (`law` entry) is `name`: powerLaw,
-//  kineticTheoryGroups, sievingPowerLaw or sievingCompositionPowerLaw;
+//  kineticTheoryGroups, sievingPowerLaw, sievingCompositionPowerLaw,
+//  collisionFrequencyGroups or impactEnergyGroups;
 //  diameterPower is the fixed k of the sieving laws (ignored by the others).
 //  Throws std::invalid_argument naming the law and the valid names.
 ConstitutiveLaw lawFromName(const std::string& name, int diameterPower = 1);

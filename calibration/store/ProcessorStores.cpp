@@ -21,10 +21,8 @@ bool endsWith(const std::string& s, const std::string& tail)
     return s.size() >= tail.size() && s.compare(s.size() - tail.size(), tail.size(), tail) == 0;
 }
 
-//- Copies the attributes and sub-groups of one condition group (condition
-//  groups hold no datasets); doubles and integers are copied exactly, so a
-//  merged condition equals the one its rank stored.
-void copyGroup(const io::Group& from, const io::Group& to)
+//- Copies the attributes of one group or dataset; doubles and integers exactly.
+void copyAttributes(const io::Node& from, const io::Node& to)
 {
     for (const std::string& name : from.attributeNames())
     {
@@ -47,16 +45,53 @@ void copyGroup(const io::Group& from, const io::Group& to)
                 );
         }
     }
+}
+
+//- Copies one dataset of a condition group: vectors of doubles or integers (the
+//  collision statistics' bin edges and histograms), matrices of doubles; exactly.
+void copyDataset(const io::Group& from, const io::Group& to, const std::string& name)
+{
+    const std::vector<std::size_t> shape = from.openDataset(name).shape();
+    const bool integer = from.isIntegerDataset(name);
+    std::optional<io::Dataset> copy;
+    if (shape.size() == 1 && integer)
+    {
+        copy = to.writeInt64Vector(name, from.readInt64Vector(name));
+    }
+    else if (shape.size() == 1)
+    {
+        copy = to.writeVector(name, from.readVector(name));
+    }
+    else if (shape.size() == 2 && !integer)
+    {
+        copy = to.writeMatrix(name, from.readMatrix(name));
+    }
+    else
+    {
+        throw std::runtime_error
+        (
+            from.path() + "/" + name + " is a dataset of a shape or type a calibration"
+            " store does not hold"
+        );
+    }
+    copyAttributes(from.openDataset(name), *copy);
+}
+
+//- Copies the attributes, datasets and sub-groups of one condition group, so a
+//  merged condition equals the one its rank stored.
+void copyGroup(const io::Group& from, const io::Group& to)
+{
+    copyAttributes(from, to);
     for (const std::string& child : from.childNames())
     {
-        if (!from.hasGroup(child))
+        if (from.hasGroup(child))
         {
-            throw std::runtime_error
-            (
-                from.path() + "/" + child + " is a dataset: a calibration store holds none"
-            );
+            copyGroup(from.openGroup(child), to.createGroup(child));
         }
-        copyGroup(from.openGroup(child), to.createGroup(child));
+        else
+        {
+            copyDataset(from, to, child);
+        }
     }
 }
 

@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <stdexcept>
 
 namespace sdf::store
 {
@@ -41,6 +42,10 @@ std::optional<double> optionalDouble(const io::Group& g, const std::string& name
 SpeciesRecord readSpecies(const io::Group& g)
 {
     SpeciesRecord s;
+    if (g.hasAttribute("count"))
+    {
+        s.count = g.readInt64("count");
+    }
     s.D = g.readDouble("D");
     s.DError = optionalDouble(g, "DError");
     s.eta = optionalDouble(g, "eta");
@@ -48,7 +53,127 @@ SpeciesRecord readSpecies(const io::Group& g)
     return s;
 }
 
+//- /conditions/<name>/collisions: the cell's collision statistics, per unordered
+//  species pair (a <= b in species order), counts and histograms as integers so that
+//  they read back exactly.
+void writeCollisions(const io::Group& g, const dem::CellRunResult& r)
+{
+    const dem::CollisionStatistics& col = r.collisions;
+    const int n = int(r.settings.species.size());
+    if (col.binEdges.empty() || col.nSpecies != n)
+    {
+        return;   // not measured
+    }
+    const io::Group cg = g.createGroup("collisions");
+    cg.setAttribute("elapsedTime", col.elapsedTime);
+    cg.setAttribute("impactEnergy", "0.5 m* v_n^2 at the first step of a contact [J]");
+    cg.writeVector("binEdges", col.binEdges);
+    for (int a = 0; a < n; ++a)
+    {
+        for (int b = a; b < n; ++b)
+        {
+            const int k = dem::speciesPairIndex(a, b, n);
+            const io::Group pg = cg.createGroup
+            (
+                r.settings.species[a].name + "/" + r.settings.species[b].name
+            );
+            pg.setAttribute("count", std::int64_t(col.counts[k]));
+            pg.setAttribute("energySum", col.energySum[k]);
+            pg.writeInt64Vector
+            (
+                "histogram",
+                std::vector<std::int64_t>(col.histogram[k].begin(), col.histogram[k].end())
+            );
+        }
+    }
+}
+
+CollisionRecord readCollisions(const io::Group& cg)
+{
+    CollisionRecord c;
+    c.elapsedTime = cg.readDouble("elapsedTime");
+    c.binEdges = cg.readVector("binEdges");
+    for (const std::string& first : cg.childNames())
+    {
+        if (!cg.hasGroup(first))
+        {
+            continue;   // binEdges
+        }
+        const io::Group fg = cg.openGroup(first);
+        for (const std::string& second : fg.childNames())
+        {
+            const io::Group pg = fg.openGroup(second);
+            PairCollisionRecord p;
+            p.first = first;
+            p.second = second;
+            p.count = pg.readInt64("count");
+            p.energySum = pg.readDouble("energySum");
+            p.histogram = pg.readInt64Vector("histogram");
+            if (p.histogram.size() != c.binEdges.size() + 1)
+            {
+                throw std::runtime_error
+                (
+                    pg.path() + "/histogram has " + std::to_string(p.histogram.size())
+                  + " slots, the " + std::to_string(c.binEdges.size())
+                  + " bin edges need " + std::to_string(c.binEdges.size() + 1)
+                );
+            }
+            c.pairs.push_back(std::move(p));
+        }
+    }
+    return c;
+}
+
 } // namespace
+
+
+const PairCollisionRecord* CollisionRecord::pair
+(
+    const std::string& a,
+    const std::string& b
+) const
+{
+    for (const PairCollisionRecord& p : pairs)
+    {
+        if ((p.first == a && p.second == b) || (p.first == b && p.second == a))
+        {
+            return &p;
+        }
+    }
+    return nullptr;
+}
+
+
+double CollisionRecord::frequencyPerParticle
+(
+    const std::string& of,
+    const std::string& with,
+    std::int64_t countOf
+) const
+{
+    const PairCollisionRecord* p = pair(of, with);
+    if (!p)
+    {
+        throw std::invalid_argument
+        (
+            "no collisions stored for the species pair " + of + "/" + with
+        );
+    }
+    if (countOf <= 0)
+    {
+        throw std::invalid_argument
+        (
+            "collision frequency of " + of + ": particle count "
+          + std::to_string(countOf) + " must be > 0"
+        );
+    }
+    if (elapsedTime <= 0)
+    {
+        return 0;
+    }
+    const double involved = (of == with ? 2.0 : 1.0)*double(p->count);
+    return involved/(elapsedTime*double(countOf));
+}
 
 
 StoreError::StoreError(const std::string& file, const std::string& message)
@@ -213,6 +338,7 @@ void appendCondition
                 sg.setAttribute("etaError", r.kineticSieving[i].standardError);
             }
         }
+        writeCollisions(g, r);
         // timings: the only attributes that differ between identical runs
         const io::Group t = g.createGroup("timing");
         t.setAttribute("wallSeconds", r.wallSeconds);
@@ -289,6 +415,10 @@ StoreContents readStore(const std::string& path)
             if (g.hasGroup(coarse))
             {
                 c.coarse = readSpecies(g.openGroup(coarse));
+            }
+            if (g.hasGroup("collisions"))
+            {
+                c.collisions = readCollisions(g.openGroup("collisions"));
             }
             contents.conditions.push_back(c);
         }

@@ -13,6 +13,16 @@
 //   /conditions/<name>/species/<species>
 //                            role (fine | coarse), d, count, T, D, DError,
 //                            DPlateauFound, DMsd, DMsdError, eta, etaError
+//   /conditions/<name>/collisions
+//                            attributes elapsedTime [s] (over which collisions were
+//                            counted), impactEnergy (its definition); dataset
+//                            binEdges [J] (nBins + 1, log-spaced, pair impact energy
+//                            E = 0.5 m* v_n^2 at the first step of a contact)
+//   /conditions/<name>/collisions/<a>/<b>
+//                            one group per unordered species pair, a <= b in the
+//                            cell's species order (fine/fine, fine/coarse,
+//                            coarse/coarse): attributes count, energySum [J];
+//                            int64 dataset histogram (nBins + 2: under, bins, over)
 //   /conditions/<name>/timing
 //                            wallSeconds cpuSeconds particleStepsPerSecond (the
 //                            only values that differ between identical runs)
@@ -131,10 +141,42 @@ bool isStored
 //- What the fits and the tables read back of a species of a condition.
 struct SpeciesRecord
 {
+    std::optional<std::int64_t> count;   // particles of the species in the cell
     double D = 0;
     std::optional<double> DError;
     std::optional<double> eta;        // engine units (kg^2 m s^-3)
     std::optional<double> etaError;
+};
+
+//- Collisions of one unordered species pair of a condition (for breakage rates).
+struct PairCollisionRecord
+{
+    std::string first;                    // species names, first <= second in the
+    std::string second;                   // cell's species order
+    std::int64_t count = 0;               // collisions counted
+    double energySum = 0;                 // sum of their impact energies [J]
+    std::vector<std::int64_t> histogram;  // binEdges.size() + 1 slots: under, bins, over
+};
+
+//- The collision statistics of a condition (dem::CollisionStatistics as stored).
+struct CollisionRecord
+{
+    double elapsedTime = 0;               // [s]
+    std::vector<double> binEdges;         // pair impact energy E = 0.5 m* v_n^2 [J]
+    std::vector<PairCollisionRecord> pairs;
+
+    //- The pair of species a and b, in either order; nullptr if not stored.
+    const PairCollisionRecord* pair(const std::string& a, const std::string& b) const;
+    //- Collisions per unit time of one particle of species `of` with particles of
+    //  species `with`, countOf being the particles of `of` in the cell (a collision
+    //  within one species involves two of its particles). Throws std::invalid_argument
+    //  if the pair is not stored or countOf <= 0; 0 if elapsedTime is 0.
+    double frequencyPerParticle
+    (
+        const std::string& of,
+        const std::string& with,
+        std::int64_t countOf
+    ) const;
 };
 
 //- What the fits and the tables read back of one condition.
@@ -147,6 +189,10 @@ struct ConditionRecord
     double T = 0;                     // measured
     SpeciesRecord fine;
     SpeciesRecord coarse;
+    //- Absent in conditions stored before the collisions were (their settings key is
+    //  the same: the binning follows from the species and targetT, both in the key or
+    //  the name, so such a condition is reused, not rerun).
+    std::optional<CollisionRecord> collisions;
 };
 
 struct StoreContents

@@ -7,6 +7,8 @@
 \*---------------------------------------------------------------------------*/
 
 #include "granularMixture.H"
+
+#include <algorithm>
 #include "zeroGradientFvPatchFields.H"
 #include "uniformDimensionedFields.H"
 #include "modelCoeffs.H"
@@ -170,7 +172,10 @@ Foam::granularMixture::granularMixture(const fvMesh& mesh)
     phiMin_(readPhiMin(*this)),
     writeFields_(getOrDefault<wordList>("writeFields", wordList()))
 {
-    const wordList validFields({"T", "gammaDot", "dMean", "D", "nTotal"});
+    const wordList validFields
+    (
+        {"T", "gammaDot", "dMean", "D", "nTotal", "S", "brokenVolume"}
+    );
     for (const word& f : writeFields_)
     {
         if (!validFields.found(f))
@@ -262,6 +267,19 @@ Foam::label Foam::granularMixture::coarsest() const
         }
     }
     return imax;
+}
+
+
+Foam::labelList Foam::granularMixture::sizeOrder() const
+{
+    labelList order(identity(size()));
+    std::stable_sort
+    (
+        order.begin(),
+        order.end(),
+        [this](const label a, const label b) { return d_[a] > d_[b]; }
+    );
+    return order;
 }
 
 

@@ -12,15 +12,16 @@ Group
     grpMultiphaseSolvers
 
 Description
-    Transient solver for the segregation (and, later, degradation) of a
-    granular mixture carried by a bulk flow. For every species i
+    Transient solver for the segregation and degradation of a granular
+    mixture carried by a bulk flow. For every species i
     (docs/developer/equations.md, seed eq 4):
 
         ddt(n_i) + div(phi n_i) + div(J_D,i + J_S,i + J_P,i) = B_i
 
     phi and U from the bulkFlow model, J_D = -D grad n_i with the mixture
     diffusivity (implicit), J_S (kinetic sieving) and J_P (percolation) as
-    explicit, bounded pairwise exchange fluxes, B_i the breakage source.
+    explicit, bounded pairwise exchange fluxes, B_i the breakage source
+    (breakageSource; the species are solved coarse to fine).
     Every mechanism is a run-time selected model in
     constant/granularProperties; `none` assembles nothing. The outlet
     composition is the outletComposition function object of
@@ -35,7 +36,7 @@ Description
 #include "diffusivityModel.H"
 #include "kineticSievingModel.H"
 #include "percolationModel.H"
-#include "breakageModel.H"
+#include "breakageSource.H"
 #include "segregationFlux.H"
 #include "speciesAdvection.H"
 #include "wallFvPatch.H"

@@ -83,6 +83,39 @@ TEST(Laws, AnalyticGradientsMatchFiniteDifferences)
     expectGradientMatchesFiniteDifferences(SievingPowerLaw{2}, sieving);
     expectGradientMatchesFiniteDifferences(SievingCompositionPowerLaw{}, sieving);
     expectGradientMatchesFiniteDifferences(SievingCompositionPowerLaw{2}, sieving);
+    Eigen::VectorXd frequency(3), energy(2);
+    frequency << 12.0, 1.3, 0.4;
+    energy << 0.45, 0.2;
+    expectGradientMatchesFiniteDifferences(CollisionFrequencyGroupsLaw{}, frequency);
+    expectGradientMatchesFiniteDifferences(ImpactEnergyGroupsLaw{}, energy);
+}
+
+TEST(Laws, CollisionFrequencyGroupsReducesToEnskog)
+{
+    // dem.kinetic_theory's omega_E = 4 n d^2 g0 sqrt(pi T1), n = 6 phi/(pi d^3)
+    Eigen::VectorXd p(3);
+    p << 24.0 / std::sqrt(M_PI), 1.0, 0.0;
+    for (const double phi : {0.05, 0.3, 0.55})
+    {
+        const double d = 2e-3, T = 0.03;
+        const Condition c{phi, 0.4, T, d, std::nullopt};
+        const double n = 6.0 * phi / (M_PI * d * d * d);
+        const double enskog = 4.0 * n * d * d * carnahanStarlingG0(phi) * std::sqrt(M_PI * T / 3.0);
+        EXPECT_NEAR(CollisionFrequencyGroupsLaw{}.evaluate(c, p) / enskog, 1.0, 1e-13);
+    }
+    EXPECT_EQ(ConstitutiveLaw(CollisionFrequencyGroupsLaw{}).name(), "collisionFrequencyGroups");
+}
+
+TEST(Laws, ImpactEnergyGroupsIsHalfT1ForAMaxwellianGas)
+{
+    // <E> = m T1 for equal grains (dem.impact_energy), W = E/(2 m): Wmean = T1/2
+    Eigen::VectorXd p(2);
+    p << 0.5, 0.0;
+    const Condition c{0.05, 0.0, 0.3, 1e-3, std::nullopt};
+    EXPECT_NEAR(ImpactEnergyGroupsLaw{}.evaluate(c, p), 0.05, 1e-15);
+    p << 0.4, -0.5;
+    EXPECT_NEAR(ImpactEnergyGroupsLaw{}.evaluate(c, p), 0.4 * 0.1 / std::sqrt(0.05), 1e-14);
+    EXPECT_EQ(ConstitutiveLaw(ImpactEnergyGroupsLaw{}).name(), "impactEnergyGroups");
 }
 
 TEST(Laws, SievingCompositionPowerLawHandValue)
@@ -156,4 +189,17 @@ TEST(Laws, FormulasAreTheLawsEvaluations)
         formulas::sievingCompositionPowerLaw(0.8, 2, -0.7, 0.3, c.phi, c.x, c.T, c.d)
     );
     EXPECT_EQ(carnahanStarlingG0(c.phi), formulas::carnahanStarlingG0(c.phi));
+    Eigen::VectorXd frequency(3), energy(2);
+    frequency << 12.0, 1.3, 0.4;
+    energy << 0.45, 0.2;
+    EXPECT_EQ
+    (
+        CollisionFrequencyGroupsLaw{}.evaluate(c, frequency),
+        formulas::collisionFrequencyGroups(12.0, 1.3, 0.4, c.phi, c.x, c.T, c.d)
+    );
+    EXPECT_EQ
+    (
+        ImpactEnergyGroupsLaw{}.evaluate(c, energy),
+        formulas::impactEnergyGroups(0.45, 0.2, c.phi, c.T)
+    );
 }

@@ -3,6 +3,7 @@
 // its reported standard errors, and the goodness of fit must say the law fits.
 #include "SyntheticData.hpp"
 
+#include "fit/BreakageRate.hpp"
 #include "fit/Laws.hpp"
 #include "fit/LeastSquares.hpp"
 
@@ -135,4 +136,71 @@ TEST(Recovery, AbsoluteSigmaGiveUnscaledErrors)
         );
     }
     EXPECT_NEAR(a.aic, a.chiSquare + 6.0, 1e-9);
+}
+
+// The breakage-rate laws: collision frequency per particle and mean mass-specific impact
+// energy, each recovered from its own noisy table; then the Vogel-Peukert rate of an
+// exponential spectrum (fit/BreakageRate.hpp) evaluated from the two fitted laws must
+// match the rate from the true laws within 5 % at the envelope's corners for a material
+// whose threshold is twice the mean impact energy (the error of S is the frequency's
+// plus 1 + Wmin/Wmean = 3 times the mean energy's, each ~0.5-1 % at a corner).
+namespace
+{
+Eigen::VectorXd collisionFrequencyTruth()
+{
+    // Enskog's C = 13.54, b = 1 bent towards a dense inelastic cell
+    Eigen::VectorXd truth(3);
+    truth << 12.0, 1.3, 0.4;
+    return truth;
+}
+
+Eigen::VectorXd impactEnergyTruth()
+{
+    // Maxwell-Boltzmann's K = 1/2, c = 0 bent likewise
+    Eigen::VectorXd truth(2);
+    truth << 0.42, 0.15;
+    return truth;
+}
+} // namespace
+
+TEST(Recovery, CollisionFrequencyGroups)
+{
+    expectRecovered(CollisionFrequencyGroupsLaw{}, collisionFrequencyTruth(), 21);
+}
+
+TEST(Recovery, ImpactEnergyGroups)
+{
+    expectRecovered(ImpactEnergyGroupsLaw{}, impactEnergyTruth(), 22);
+}
+
+TEST(Recovery, BreakageRateFromTheFittedLaws)
+{
+    using namespace sdf::fit::breakage;
+    const FitResult frequency =
+        expectRecovered(CollisionFrequencyGroupsLaw{}, collisionFrequencyTruth(), 23);
+    const FitResult energy = expectRecovered(ImpactEnergyGroupsLaw{}, impactEnergyTruth(), 24);
+    double worst = 0;
+    for (const double phi : {0.1, 0.5})
+    {
+        for (const double T : {1e-3, 1e-1})
+        {
+            const Condition c{phi, 0.3, T, 1e-3, std::nullopt};
+            const double omegaTrue = CollisionFrequencyGroupsLaw{}.evaluate(c, collisionFrequencyTruth());
+            const double WmeanTrue = ImpactEnergyGroupsLaw{}.evaluate(c, impactEnergyTruth());
+            // fMat 2 kg/(J m) and a threshold of twice the state's true mean impact
+            // energy: a material at the onset of breakage there
+            const VogelPeukertMaterial material{2.0, 2*WmeanTrue*c.d};
+            const double fitted = vogelPeukertRateExponentialSpectrum
+            (
+                material, c.d, frequency.evaluate(c), energy.evaluate(c)
+            );
+            const double exact = vogelPeukertRateExponentialSpectrum(material, c.d, omegaTrue, WmeanTrue);
+            ASSERT_GT(exact, 0.0);
+            worst = std::max(worst, std::abs(fitted / exact - 1.0));
+            EXPECT_NEAR(fitted / exact, 1.0, 0.05) << "phi " << phi << ", T " << T;
+            std::cout << "  phi " << phi << " T " << T << ": S = " << fitted << " 1/s (true "
+                      << exact << ")\n";
+        }
+    }
+    std::cout << "  largest relative error of S: " << worst << "\n";
 }

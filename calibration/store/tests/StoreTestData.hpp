@@ -6,6 +6,7 @@
 #include "store/Store.hpp"
 
 #include <string>
+#include <vector>
 
 namespace sdf::store::test
 {
@@ -36,6 +37,17 @@ inline dem::CellRunResult syntheticResult(double scale = 1)
         r.species.push_back(st);
     }
     r.kineticSieving = {{3e-9*scale, 1e-10*scale, 0}, {7e-9*scale, 2e-10*scale, 0}};
+    // collisions: 3 log bins, pairs (small, small), (small, large), (large, large);
+    // each pair's histogram (under, bins, over) adds up to its count
+    r.collisions.reset(2, 1e-9*scale, 1e-6*scale, 3);
+    r.collisions.elapsedTime = 0.25;
+    for (int k = 0; k < 3; ++k)
+    {
+        r.collisions.histogram[k] = {k, 10 + k, 20*(k + 1), 5, 1};
+        r.collisions.counts[k] = 0;
+        for (long c : r.collisions.histogram[k]) r.collisions.counts[k] += c;
+        r.collisions.energySum[k] = 1.0123456789e-7*scale*(k + 1);
+    }
     r.wallSeconds = 1.5;
     r.cpuSeconds = 1.4;
     r.particleStepsPerSecond = 1e6;

@@ -60,6 +60,18 @@ TEST(processorStores, mergeMovesEveryConditionOnce)
     EXPECT_EQ(g.readString("settingsKey"), "k");
     EXPECT_EQ(g.openGroup("timing").readDouble("cpuSeconds"), 1.4);
     EXPECT_EQ(g.openGroup("species/large").readString("role"), "coarse");
+    // and the collision statistics' datasets (bin edges, integer histograms)
+    const sdf::dem::CellRunResult r3 = syntheticResult(3);
+    const CollisionRecord& col = *contents.conditions[2].collisions;
+    EXPECT_EQ(col.binEdges, r3.collisions.binEdges);
+    EXPECT_EQ(col.elapsedTime, r3.collisions.elapsedTime);
+    EXPECT_EQ(col.pair("small", "large")->energySum, r3.collisions.energySum[1]);
+    EXPECT_EQ
+    (
+        col.pair("large", "large")->histogram,
+        std::vector<std::int64_t>(r3.collisions.histogram[2].begin(), r3.collisions.histogram[2].end())
+    );
+    EXPECT_TRUE(g.openGroup("collisions/small/small").isIntegerDataset("histogram"));
 
     // Nothing left to merge
     EXPECT_EQ(mergeProcessorStores(h5).conditionsMoved, 0u);

@@ -101,6 +101,74 @@ TEST(store, writesAndReadsBackACondition)
 }
 
 
+TEST(store, writesAndReadsBackTheCollisionStatistics)
+{
+    // Collision counts and impact-energy histograms per species pair (breakage rates):
+    // read back exactly, either pair order, frequencies per particle as the engine's
+    const TemporaryDirectory dir;
+    const std::string h5 = dir.file("calibration.h5");
+    const sdf::dem::CellRunResult r = syntheticResult();
+    appendCondition(h5, "small", "large", "k", inputs(0.3, 0.4, 0.01, 1), r);
+
+    const StoreContents contents = readStore(h5);
+    ASSERT_EQ(contents.conditions.size(), 1u);
+    const ConditionRecord& c = contents.conditions[0];
+    ASSERT_TRUE(c.collisions.has_value());
+    const CollisionRecord& col = *c.collisions;
+    EXPECT_EQ(col.elapsedTime, r.collisions.elapsedTime);
+    EXPECT_EQ(col.binEdges, r.collisions.binEdges);
+    ASSERT_EQ(col.pairs.size(), 3u);
+    const std::vector<std::string> names{"small", "large"};
+    for (int a = 0; a < 2; ++a)
+    {
+        for (int b = 0; b < 2; ++b)
+        {
+            const int k = sdf::dem::speciesPairIndex(a, b, 2);
+            const PairCollisionRecord* p = col.pair(names[a], names[b]);
+            ASSERT_NE(p, nullptr) << names[a] << "/" << names[b];
+            EXPECT_EQ(p->count, r.collisions.counts[k]);
+            EXPECT_EQ(p->energySum, r.collisions.energySum[k]);
+            EXPECT_EQ
+            (
+                p->histogram,
+                std::vector<std::int64_t>(r.collisions.histogram[k].begin(), r.collisions.histogram[k].end())
+            );
+            ASSERT_TRUE(c.fine.count.has_value());
+            const std::vector<int> speciesCounts{int(*c.fine.count), int(*c.coarse.count)};
+            EXPECT_EQ
+            (
+                col.frequencyPerParticle(names[a], names[b], speciesCounts[a]),
+                r.collisions.frequencyPerParticle(a, b, speciesCounts)
+            );
+        }
+    }
+    // stored in species order: (small, large), not (large, small)
+    EXPECT_EQ(col.pair("large", "small")->first, "small");
+    EXPECT_EQ(col.pair("small", "medium"), nullptr);
+    EXPECT_THROW(col.frequencyPerParticle("small", "medium", 100), std::invalid_argument);
+    EXPECT_THROW(col.frequencyPerParticle("small", "large", 0), std::invalid_argument);
+
+    // The layout: integer counts and histograms (exact), the bin edges as doubles
+    const sdf::io::File f = sdf::io::File::openReadOnly(h5);
+    const sdf::io::Group g = f.root().openGroup("conditions/" + c.name + "/collisions");
+    EXPECT_EQ(g.readDouble("elapsedTime"), 0.25);
+    EXPECT_EQ(g.openGroup("small/large").readInt64("count"), r.collisions.counts[1]);
+    EXPECT_TRUE(g.openGroup("large/large").isIntegerDataset("histogram"));
+    EXPECT_FALSE(g.hasGroup("large/small"));
+
+    // A condition stored before the collisions were (no group) reads as absent,
+    // under the same settings key
+    sdf::dem::CellRunResult old = syntheticResult(2);
+    old.collisions = sdf::dem::CollisionStatistics();
+    appendCondition(h5, "small", "large", "k", inputs(0.2, 0.4, 0.01, 1), old);
+    const StoreContents both = readStore(h5);
+    ASSERT_EQ(both.conditions.size(), 2u);
+    EXPECT_FALSE(both.conditions[0].collisions.has_value());
+    EXPECT_TRUE(both.conditions[1].collisions.has_value());
+    EXPECT_EQ(storedSettingsKeys(h5).at(both.conditions[0].name), "k");
+}
+
+
 TEST(store, settingsKeyFingerprintsEveryDEMSetting)
 {
     const sdf::dem::CellRunSettings base = syntheticResult().settings;

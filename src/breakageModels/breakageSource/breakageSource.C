@@ -1,0 +1,245 @@
+/*---------------------------------------------------------------------------*\
+  =========                 |
+  \\      /  F ield         | segregationDegradationFoam
+   \\    /   O peration     |
+    \\  /    A nd           |
+     \\/     M anipulation  |
+\*---------------------------------------------------------------------------*/
+
+#include "breakageSource.H"
+#include "fvmSup.H"
+#include "zeroGradientFvPatchFields.H"
+#include "modelCoeffs.H"
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+Foam::dictionary Foam::breakageSource::selectionDict
+(
+    const dictionary& breakageDict
+)
+{
+    dictionary dict(breakageDict);
+    dict.remove("daughterSizeDistribution");
+    dict.remove("fines");
+    return dict;
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::breakageSource::breakageSource
+(
+    const granularMixture& mixture,
+    const dictionary& breakageDict
+)
+:
+    mixture_(mixture),
+    selection_(breakageModel::New(selectionDict(breakageDict), mixture)),
+    dustSink_(false)
+{
+    if (!selection_->active())
+    {
+        return;
+    }
+
+    const word fines(breakageDict.getOrDefault<word>("fines", "finestClass"));
+    if (fines == "dust")
+    {
+        dustSink_ = true;
+    }
+    else if (fines != "finestClass")
+    {
+        FatalIOErrorInFunction(breakageDict)
+            << "Unknown 'fines " << fines << "' in " << breakageDict.name()
+            << nl << "    valid: finestClass (fragments below the finest"
+            << " class join it, volume kept) dust (removed to the dust"
+            << " field, volume and number accounted)" << nl
+            << exit(FatalIOError);
+    }
+
+    if (!breakageDict.isDict("daughterSizeDistribution"))
+    {
+        FatalIOErrorInFunction(breakageDict)
+            << "Missing dictionary 'daughterSizeDistribution' in "
+            << breakageDict.name() << nl
+            << "    e.g. daughterSizeDistribution { model uniformBinary; }"
+            << nl << exit(FatalIOError);
+    }
+    daughters_ = daughterSizeDistributionModel::New
+    (
+        breakageDict.subDict("daughterSizeDistribution"),
+        mixture
+    );
+
+    weights_.setSize(mixture.size());
+    parents_.setSize(mixture.size());
+    Info<< "Breakage: fragments on the class grid (volume fraction of the"
+        << " parent, fragments per event)" << nl;
+    forAll(weights_, j)
+    {
+        const labelList grid
+        (
+            daughterSizeDistributionModel::classGrid(mixture, j)
+        );
+        weights_[j] = daughters_->weights(j, grid, dustSink_);
+
+        const breakageWeights& w = weights_[j];
+        if (mag(w.volumeBalance() - 1) > 1e-9)
+        {
+            FatalIOErrorInFunction(breakageDict)
+                << "The fragments of species " << mixture.names()[j]
+                << " keep " << w.volumeBalance() << " of the parent's"
+                << " volume (must be 1): daughterSizeDistribution in "
+                << breakageDict.name() << nl << exit(FatalIOError);
+        }
+
+        Info<< "    " << mixture.names()[j] << " ->";
+        forAll(w.volume, i)
+        {
+            if (w.volume[i] > 0)
+            {
+                Info<< " " << mixture.names()[i] << " " << w.volume[i]
+                    << " (" << w.number[i] << ")";
+                if (i != j)
+                {
+                    parents_[i].append(j);
+                }
+            }
+        }
+        if (w.dustVolume > 0)
+        {
+            Info<< " dust " << w.dustVolume << " (" << w.dustNumber << ")";
+        }
+        Info<< nl;
+    }
+    Info<< endl;
+
+    const fvMesh& mesh = mixture.mesh();
+    if (dustSink_)
+    {
+        dust_.reset
+        (
+            new volScalarField
+            (
+                IOobject
+                (
+                    "dust",
+                    mesh.time().timeName(),
+                    mesh,
+                    IOobject::READ_IF_PRESENT,
+                    IOobject::AUTO_WRITE
+                ),
+                mesh,
+                dimensionedScalar("dust", dimless, Zero),
+                zeroGradientFvPatchScalarField::typeName
+            )
+        );
+    }
+    if (mixture.writeField("brokenVolume"))
+    {
+        brokenVolume_.reset
+        (
+            new volScalarField
+            (
+                IOobject
+                (
+                    "brokenVolume",
+                    mesh.time().timeName(),
+                    mesh,
+                    IOobject::READ_IF_PRESENT,
+                    IOobject::AUTO_WRITE
+                ),
+                mesh,
+                dimensionedScalar("brokenVolume", dimless, Zero),
+                zeroGradientFvPatchScalarField::typeName
+            )
+        );
+    }
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::breakageSource::correct
+(
+    const granularTemperatureModel& granularTemperature
+)
+{
+    if (active())
+    {
+        selection_->correct(granularTemperature);
+    }
+}
+
+
+Foam::tmp<Foam::volScalarField::Internal>
+Foam::breakageSource::lossRate(const label j) const
+{
+    return (1 - weights_[j].volume[j])*selection_->S(j).internalField();
+}
+
+
+Foam::tmp<Foam::fvScalarMatrix> Foam::breakageSource::source
+(
+    const label i
+) const
+{
+    volScalarField& ni = const_cast<volScalarField&>(mixture_.n()[i]);
+
+    tmp<fvScalarMatrix> tB(-fvm::Sp(lossRate(i), ni));
+    fvScalarMatrix& B = tB.ref();
+
+    for (const label j : parents_[i])
+    {
+        B += weights_[j].volume[i]*selection_->S(j).internalField()
+            *mixture_.n()[j].internalField();
+    }
+    return tB;
+}
+
+
+void Foam::breakageSource::accumulate(const dimensionedScalar& deltaT)
+{
+    if (!active() || (!dust_ && !brokenVolume_))
+    {
+        return;
+    }
+    forAll(weights_, j)
+    {
+        const volScalarField::Internal rate
+        (
+            selection_->S(j).internalField()*mixture_.n()[j].internalField()
+        );
+        if (dust_ && weights_[j].dustVolume > 0)
+        {
+            dust_->ref() += deltaT*weights_[j].dustVolume*rate;
+        }
+        if (brokenVolume_)
+        {
+            brokenVolume_->ref() += deltaT*(1 - weights_[j].volume[j])*rate;
+        }
+    }
+    if (dust_)
+    {
+        dust_->correctBoundaryConditions();
+    }
+    if (brokenVolume_)
+    {
+        brokenVolume_->correctBoundaryConditions();
+    }
+}
+
+
+void Foam::breakageSource::writeDerivedFields() const
+{
+    if (active() && mixture_.writeField("S"))
+    {
+        forAll(mixture_.n(), j)
+        {
+            selection_->S(j).write();
+        }
+    }
+}
+
+
+// ************************************************************************* //
