@@ -32,3 +32,67 @@ PY
     python3 -m sdfoam.fieldStats "$dir" changed --tol 0.05 || return 1
     python3 -m sdfoam.fieldStats "$dir" bounds --tol 1e-8
 }
+
+# The closed box with breakage as well (powerLaw S = 0.4 (d/2 mm)^3 1/s,
+# uniform binary fragments, fines to the dust sink): solids + dust
+# conserved to 1e-10 relative over every step, 0 <= n_i <= phi, dust
+# formed; and the same case on 2 MPI ranks equals the serial run (species
+# and dust) to 1e-9
+test_closed_box_breakage()
+{
+    local serial="$workRoot/closedBoxBreakage" parallel="$workRoot/closedBoxBreakageParallel"
+    local d
+    for d in "$serial" "$parallel"
+    do
+        rm -rf "$d"; cp -r tests/solver/closedBox "$d"
+        foamDictionary -entry endTime -set 1 "$d/system/controlDict" > /dev/null
+        foamDictionary -entry breakage -remove "$d/constant/granularProperties" > /dev/null
+        cat >> "$d/constant/granularProperties" <<'DICT'
+breakage
+{
+    model       powerLaw;
+    powerLawCoeffs { k 0.4; dRef 2e-3; a 3; }
+    daughterSizeDistribution { model uniformBinary; }
+    fines       dust;
+}
+DICT
+        blockMesh -case "$d" > "$d/log.blockMesh" 2>&1 || { cat "$d/log.blockMesh"; return 1; }
+        cp -r "$d/0.orig" "$d/0"
+        setFields -case "$d" > "$d/log.setFields" 2>&1 || { cat "$d/log.setFields"; return 1; }
+    done
+    segregationDegradationFoam -case "$serial" > "$serial/log.solver" 2>&1 || { tail -30 "$serial/log.solver"; return 1; }
+    python3 - "$serial/log.solver" <<'PY' || return 1
+import re, sys
+totals = []
+for line in open(sys.argv[1]):
+    if line.startswith("Solids:"):
+        m = re.search(r"total volume (\S+)\s+dust volume (\S+)", line)
+        if m:
+            totals.append((float(m.group(1)), float(m.group(2))))
+if len(totals) < 10:
+    print("too few steps parsed"); sys.exit(1)
+# The initial state before the first step: the first step's total plus dust
+first = totals[0][0] + totals[0][1]
+rel = max(abs(s + d - first) for s, d in totals) / first
+print("solids + dust: %.12e, max relative change over %d steps %.2e; dust at the end %.4e (%.2f %% of the solids)"
+      % (first, len(totals), rel, totals[-1][1], 100 * totals[-1][1] / first))
+sys.exit(0 if rel < 1e-10 and totals[-1][1] > 1e-3 * first else 1)
+PY
+    python3 -m sdfoam.fieldStats "$serial" bounds --tol 1e-8 || return 1
+
+    decomposePar -case "$parallel" > "$parallel/log.decomposePar" 2>&1 || { tail -20 "$parallel/log.decomposePar"; return 1; }
+    mpirun -np 2 segregationDegradationFoam -parallel -case "$parallel" > "$parallel/log.solver" 2>&1 || { tail -20 "$parallel/log.solver"; return 1; }
+    reconstructPar -latestTime -case "$parallel" > "$parallel/log.reconstructPar" 2>&1 || return 1
+    python3 -m sdfoam.fieldStats "$parallel" compare "$serial" --tol 1e-9 || return 1
+    python3 - "$serial" "$parallel" <<'PY'
+import sys
+from sdfoam import foamcase
+a, b = sys.argv[1], sys.argv[2]
+t = foamcase.latestTime(a)
+da = foamcase.readScalarField(a, t, "dust")
+db = foamcase.readScalarField(b, foamcase.latestTime(b), "dust")
+worst = max(abs(x - y) for x, y in zip(da, db))
+print("dust: max |parallel - serial| %.3e" % worst)
+sys.exit(0 if worst <= 1e-9 else 1)
+PY
+}

@@ -13,6 +13,13 @@ prepare_small_case()
     cp -r "$dir/0.orig" "$dir/0"
 }
 
+# set_breakage FILE TEXT: replace the breakage dictionary of granularProperties
+set_breakage()
+{
+    foamDictionary -entry breakage -remove "$1" > /dev/null
+    echo "breakage { $2 }" >> "$1"
+}
+
 # test_bad_input KIND: break the case one way, expect a fatal error that
 # names the entry, and no time directory written
 test_bad_input()
@@ -45,6 +52,27 @@ test_bad_input()
         missingMechanism)
             foamDictionary -entry kineticSieving -remove "$gp" > /dev/null
             expect=("kineticSieving") ;;
+        breakageNotConserving)
+            set_breakage "$gp" "model constant; constantCoeffs { S { coarse 0.1; } } daughterSizeDistribution { model table; tableCoeffs { coarse { fine 0.9; } } }"
+            expect=("coarse" "sum to 0.9" "must sum to 1") ;;
+        breakageIntoCoarser)
+            set_breakage "$gp" "model constant; constantCoeffs { S { fine 0.1; } } daughterSizeDistribution { model table; tableCoeffs { fine { coarse 1; } } }"
+            expect=("'coarse'" "not finer than the parent fine") ;;
+        breakageNegativeRate)
+            set_breakage "$gp" "model constant; constantCoeffs { S { coarse -0.1; } } daughterSizeDistribution { model uniformBinary; }"
+            expect=("S.coarse -0.1" ">= 0") ;;
+        breakageNegativeMaterial)
+            set_breakage "$gp" "model vogelPeukert; vogelPeukertCoeffs { fMat -2; xWmMin 0.05; } daughterSizeDistribution { model uniformBinary; }"
+            expect=("fMat -2" ">= 0" "vogelPeukertCoeffs") ;;
+        breakageUnknownModel)
+            set_breakage "$gp" "model fancy; daughterSizeDistribution { model uniformBinary; }"
+            expect=("Unknown breakage model type fancy" "constant" "powerLaw" "vogelPeukert" "none") ;;
+        breakageUnknownDaughters)
+            set_breakage "$gp" "model constant; constantCoeffs { S { coarse 0.1; } } daughterSizeDistribution { model fancy; }"
+            expect=("Unknown daughterSizeDistribution model type fancy" "uniformBinary" "austin" "table") ;;
+        breakageMissingCoefficient)
+            set_breakage "$gp" "model powerLaw; powerLawCoeffs { dRef 1e-3; a 3; } daughterSizeDistribution { model uniformBinary; }"
+            expect=("k" "powerLawCoeffs") ;;
         *) echo "unknown kind $kind"; return 1 ;;
     esac
 
