@@ -11,6 +11,7 @@
 #include "mathematicalConstants.H"
 #include "modelCoeffs.H"
 #include "LawFormulas.hpp"
+#include "BreakageRate.hpp"
 
 namespace Foam
 {
@@ -70,8 +71,15 @@ Foam::scalar Foam::breakageModels::vogelPeukert::exponentialSpectrumRate
     {
         return 0;
     }
+    // The formula the DEM calibration uses (calibration/fit/BreakageRate.hpp):
     // integral_Wmin^inf (W - Wmin) exp(-W/Wbar)/Wbar dW = Wbar exp(-Wmin/Wbar)
-    return fMat*x*impactRate*Wbar*Foam::exp(-(xWmMin/x)/Wbar);
+    return sdf::fit::breakage::vogelPeukertRateExponentialSpectrum
+    (
+        sdf::fit::breakage::VogelPeukertMaterial{fMat, xWmMin},
+        x,
+        impactRate,
+        Wbar
+    );
 }
 
 
