@@ -9,6 +9,7 @@
 #include "outletComposition.H"
 #include "granularMixture.H"
 #include "openPatches.H"
+#include "caseFields.H"
 #include "volFields.H"
 #include "surfaceFields.H"
 #include "OSspecific.H"
@@ -27,31 +28,6 @@ namespace functionObjects
 
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
-
-Foam::tmp<Foam::volScalarField>
-Foam::functionObjects::outletComposition::speciesField(const word& name) const
-{
-    const volScalarField* registered =
-        mesh_.findObject<volScalarField>(name);
-    if (registered)
-    {
-        return tmp<volScalarField>(*registered);
-    }
-    return tmp<volScalarField>::New
-    (
-        IOobject
-        (
-            name,
-            time_.timeName(),
-            mesh_,
-            IOobject::MUST_READ,
-            IOobject::NO_WRITE,
-            false
-        ),
-        mesh_
-    );
-}
-
 
 Foam::tmp<Foam::surfaceScalarField>
 Foam::functionObjects::outletComposition::flux() const
@@ -158,28 +134,7 @@ Foam::functionObjects::outletComposition::outletComposition
 {
     // The species of the running solver's mixture, else of the case's
     // constant/granularProperties (post-processing)
-    const granularMixture* mixture =
-        mesh_.findObject<granularMixture>("granularProperties");
-    if (mixture)
-    {
-        species_ = granularMixture::readSpecies(*mixture);
-    }
-    else
-    {
-        const IOdictionary granularProperties
-        (
-            IOobject
-            (
-                "granularProperties",
-                runTime.constant(),
-                mesh_,
-                IOobject::MUST_READ,
-                IOobject::NO_WRITE,
-                false
-            )
-        );
-        species_ = granularMixture::readSpecies(granularProperties);
-    }
+    species_ = caseSpecies(mesh_);
 
     read(dict);
 
@@ -234,7 +189,7 @@ bool Foam::functionObjects::outletComposition::execute()
     List<tmp<volScalarField>> n(species_.size());
     forAll(species_, k)
     {
-        n[k] = speciesField("n." + species_[k].name);
+        n[k] = registeredOrRead(mesh_, "n." + species_[k].name);
     }
 
     // The solver's time step; between the processed times afterwards
