@@ -17,8 +17,11 @@ Description
     phi, coarse fraction x, granular temperature T, replicas), stores every
     finished condition at once in constant/calibration.h5 (a rerun skips the
     stored ones), fits constitutive laws (calibration/fit) to the diffusivity
-    of the fines (D) and the kinetic sieving coefficient of the coarse (eta),
-    chooses among candidate laws by AIC and writes constant/granularCoefficients.
+    of the fines (D), the kinetic sieving coefficient of the coarse (eta)
+    and, for breakage, the collision frequency (omega.<species>) and mean
+    mass-specific impact energy (Wmean.<species>) of a particle of each
+    species, chooses among candidate laws by AIC and writes
+    constant/granularCoefficients.
 
     Species (d, rho) come from constant/granularProperties (exactly two: the
     smaller is the fine species); the rest from system/calibrationDict
@@ -102,7 +105,8 @@ int main(int argc, char *argv[])
         if (fromCase->coefficients.empty())
         {
             Info<< "Nothing to calibrate: constant/granularProperties switches"
-                << " off both diffusivity and kineticSieving (model none)."
+                << " off both diffusivity and kineticSieving (model none)"
+                << " and breakage is not calibrated."
                 << " Nothing is run or written." << nl << nl << "End" << nl
                 << endl;
             return 0;

@@ -181,16 +181,29 @@ Foam::caseEnvelope Foam::deriveEnvelope
     caseEnvelope env;
     const fileName caseDir(runTime.globalPath());
 
-    // Coefficients of the mechanisms the case switches on
+    // Coefficients of the mechanisms the case switches on (breakage: only
+    // when its selection rate is calibrated)
     const bool diffusion = mechanismOn(properties, "diffusivity");
     const bool sieving = mechanismOn(properties, "kineticSieving");
+    // Breakage needs DEM only with the calibrated selection rate (the other
+    // models take their rates from their own coefficients); a case without
+    // a breakage block has none
+    const word breakageModel =
+        properties.isDict("breakage")
+      ? properties.subDict("breakage").get<word>("model")
+      : word::null;
     if (diffusion) env.coefficients.append("D");
     if (sieving) env.coefficients.append("eta");
+    if (breakageModel == "calibrated") env.coefficients.append("breakage");
     Info<< "-fromCase: diffusivity "
         << properties.subDict("diffusivity").get<word>("model")
         << ", kineticSieving "
-        << properties.subDict("kineticSieving").get<word>("model")
-        << " in constant/granularProperties -> coefficients (";
+        << properties.subDict("kineticSieving").get<word>("model");
+    if (!breakageModel.empty())
+    {
+        Info<< ", breakage " << breakageModel;
+    }
+    Info<< " in constant/granularProperties -> coefficients (";
     for (const word& c : env.coefficients)
     {
         Info<< (&c == &env.coefficients.first() ? "" : " ") << c;

@@ -17,7 +17,9 @@
 #include "fit/ModelSelection.hpp"
 #include "fit/OpenFOAMDictionary.hpp"
 #include "fit/SievingNormalisation.hpp"
+#include "fit/BreakageRate.hpp"
 
+#include <cmath>
 #include <cstdlib>
 #include <fstream>
 #include <iomanip>
@@ -32,6 +34,26 @@ using numberText::fmt;
 namespace
 {
 
+//- The impacts one particle of a species suffers (breakage rates), from the
+//  stored collisions of a condition
+struct SpeciesImpacts
+{
+    //- Collisions per second of one particle, with all partners [1/s]
+    scalar omega = 0, omegaError = 0;
+
+    //- Mean mass-specific impact energy W = E/(m_i + m_j) of its impacts
+    //  [J/kg]
+    scalar Wmean = 0, WmeanError = 0;
+
+    //- Distinct collisions counted (the statistics behind the errors)
+    label collisions = 0;
+
+    //- Its impact spectrum (every partner, bins of the store): for the
+    //  check of the exponential-spectrum closed form
+    sdf::fit::breakage::ImpactSpectrum spectrum;
+};
+
+
 struct StoredResult
 {
     calibrationCondition cond;
@@ -39,7 +61,112 @@ struct StoredResult
     scalar D = 0, DError = 0;        // fines
     scalar eta = 0, etaError = 0;    // coarse, m2/s (converted on reading)
     bool hasEta = false;
+
+    //- The collisions were stored (conditions stored before they were
+    //  recorded have none)
+    bool hasCollisions = false;
+
+    //- Why the stored collisions could not be read (empty: they were)
+    std::string collisionsError;
+
+    //- 0: fine, 1: coarse
+    SpeciesImpacts impacts[2];
 };
+
+
+//- Mass of one particle of a species [kg]
+double particleMass(const granularSpecies& s)
+{
+    return s.rho*M_PI*s.d*s.d*s.d/6.0;
+}
+
+
+//- The impacts of one particle of each species from the collisions of a
+//  condition: a collision within a species is an impact for both of its
+//  particles; W = E/(m_i + m_j) (fit/BreakageRate.hpp). Errors: Poisson,
+//  omega/sqrt(collisions); the standard error of the mean of an
+//  exponential spectrum, Wmean/sqrt(collisions).
+void readImpacts
+(
+    const sdf::store::ConditionRecord& record,
+    const calibrationSettings& settings,
+    StoredResult& r
+)
+{
+    namespace bk = sdf::fit::breakage;
+    const sdf::store::CollisionRecord& coll = *record.collisions;
+    const granularSpecies* sp[2] = {&settings.fine(), &settings.coarse()};
+    const std::optional<std::int64_t> counts[2] =
+        {record.fine.count, record.coarse.count};
+    for (int s = 0; s < 2; ++s)
+    {
+        if (!counts[s] || *counts[s] <= 0)
+        {
+            throw std::runtime_error
+            (
+                "condition " + r.cond.name + " has no particle count of "
+              + std::string(sp[s]->name)
+            );
+        }
+        SpeciesImpacts& imp = r.impacts[s];
+        double impacts = 0, Wsum = 0;
+        for (int t = 0; t < 2; ++t)
+        {
+            const sdf::store::PairCollisionRecord* p =
+                coll.pair(sp[s]->name, sp[t]->name);
+            if (!p)
+            {
+                throw std::runtime_error
+                (
+                    "condition " + r.cond.name + " has no collisions of the"
+                    " pair " + std::string(sp[s]->name) + "/"
+                  + std::string(sp[t]->name)
+                );
+            }
+            const double ms = particleMass(*sp[s]), mt = particleMass(*sp[t]);
+            const double involved = s == t ? 2.0 : 1.0;
+            impacts += involved*double(p->count);
+            Wsum += involved*p->energySum/(ms + mt);
+            imp.collisions += label(p->count);
+            if (coll.elapsedTime > 0)
+            {
+                const bk::ImpactSpectrum pairSpectrum =
+                    bk::impactSpectrumFromHistogram
+                    (
+                        coll.binEdges,
+                        std::vector<long>(p->histogram.begin(), p->histogram.end()),
+                        coll.elapsedTime,
+                        int(*counts[s]),
+                        s == t,
+                        ms,
+                        mt
+                    );
+                imp.spectrum.energy.insert
+                (
+                    imp.spectrum.energy.end(),
+                    pairSpectrum.energy.begin(), pairSpectrum.energy.end()
+                );
+                imp.spectrum.frequency.insert
+                (
+                    imp.spectrum.frequency.end(),
+                    pairSpectrum.frequency.begin(), pairSpectrum.frequency.end()
+                );
+            }
+        }
+        if (coll.elapsedTime > 0)
+        {
+            imp.omega = impacts/(coll.elapsedTime*double(*counts[s]));
+        }
+        imp.Wmean = impacts > 0 ? Wsum/impacts : 0;
+        if (imp.collisions > 0)
+        {
+            const double rel = 1/std::sqrt(double(imp.collisions));
+            imp.omegaError = rel*imp.omega;
+            imp.WmeanError = rel*imp.Wmean;
+        }
+    }
+    r.hasCollisions = true;
+}
 
 
 std::vector<StoredResult> readResults
@@ -100,6 +227,20 @@ std::vector<StoredResult> readResults
                 r.hasEta = true;
                 r.eta = toKinematic*(*record.coarse.eta);
                 r.etaError = toKinematic*(*record.coarse.etaError);
+            }
+            if (record.collisions)
+            {
+                // Needed by breakage only: a fault here stops breakage's fit,
+                // not the others
+                try
+                {
+                    readImpacts(record, settings, r);
+                }
+                catch (const std::exception& err)
+                {
+                    r.hasCollisions = false;
+                    r.collisionsError = err.what();
+                }
             }
             out.push_back(r);
         }
@@ -221,6 +362,200 @@ void plotCoefficient
     }
 }
 
+//- Fit every candidate law of one coefficient to rows, print the fits and
+//  the ranking by AIC, and return the chosen law; a law refusing its data
+//  or no converged law stops with a FatalError (nothing written)
+sdf::fit::CalibratedCoefficient fitCoefficient
+(
+    const word& coeff,
+    const std::string& what,
+    const std::vector<sdf::fit::Observation>& rows,
+    const wordList& laws,
+    const sdf::fit::FitOptions& options,
+    const calibrationSettings& settings
+)
+{
+    Info<< "Fit of " << coeff << " (" << what.c_str() << ") to "
+        << label(rows.size()) << " rows, "
+        << (options.space == sdf::fit::FitSpace::linear ? "linear" : "log")
+        << " space:" << nl;
+
+    std::vector<sdf::fit::FitResult> fits;
+    for (const word& lawName : laws)
+    {
+        const sdf::fit::ConstitutiveLaw law =
+            sdf::fit::lawFromName(lawName, int(settings.etaDiameterPower()));
+        try
+        {
+            fits.push_back(sdf::fit::fitLaw(law, rows, options));
+        }
+        catch (const std::exception& err)
+        {
+            FatalErrorInFunction
+                << "Fit of law '" << lawName << "' to " << coeff
+                << " refused its data:" << nl << "    " << err.what() << nl
+                << "    constant/granularCoefficients is not written."
+                << nl << exit(FatalError);
+        }
+        reportFit(fits.back());
+    }
+
+    try
+    {
+        sdf::fit::ModelSelection sel = sdf::fit::selectModel(fits);
+        Info<< "  model selection by AIC for " << coeff << ":" << nl;
+        for (const auto& rk : sel.ranking)
+        {
+            Info<< "    " << rk.law.c_str() << ": AIC = " << fmt(rk.criterion).c_str()
+                << ", delta = " << fmt(rk.delta).c_str()
+                << ", weight = " << fmt(rk.weight).c_str() << nl;
+        }
+        for (const auto& f : sel.failed)
+        {
+            Warning
+                << "Law '" << f.first.c_str() << "' for " << coeff
+                << " did not converge and takes no part: "
+                << f.second.c_str() << endl;
+        }
+        const sdf::fit::FitResult& best = fits[sel.best().index];
+        Info<< "  chosen for " << coeff << ": " << sel.best().law.c_str()
+            << nl << endl;
+        return {coeff, best, sel};
+    }
+    catch (const std::exception& err)
+    {
+        FatalErrorInFunction
+            << "No law for " << coeff << " could be fitted:" << nl
+            << "    " << err.what() << nl
+            << "    constant/granularCoefficients is not written." << nl
+            << exit(FatalError);
+    }
+    return {coeff, fits.front(), std::nullopt};
+}
+
+
+//- Breakage: for each species s the collisions per second of one particle
+//  (omega.<s>, collisionFrequencyLaws) and the mean mass-specific energy
+//  of its impacts (Wmean.<s>, impactEnergyLaws), d the diameter of s; then
+//  the check of the exponential spectrum the solver's closed form assumes
+void fitBreakage
+(
+    const fileName& h5,
+    const std::vector<StoredResult>& results,
+    const calibrationSettings& settings,
+    std::vector<sdf::fit::CalibratedCoefficient>& calibrated
+)
+{
+    const granularSpecies* sp[2] = {&settings.fine(), &settings.coarse()};
+    for (const StoredResult& r : results)
+    {
+        if (!r.collisionsError.empty())
+        {
+            FatalErrorInFunction
+                << "Reading the collisions back from " << h5 << " failed: "
+                << r.collisionsError.c_str() << nl << exit(FatalError);
+        }
+        if (!r.hasCollisions)
+        {
+            FatalErrorInFunction
+                << "Condition " << r.cond.name.c_str() << " in " << h5
+                << " has no collision statistics (stored before they were"
+                << " recorded): move " << h5 << " away and rerun to"
+                << " calibrate breakage" << nl << exit(FatalError);
+        }
+        for (int s = 0; s < 2; ++s)
+        {
+            if (r.impacts[s].collisions == 0 || !(r.impacts[s].Wmean > 0))
+            {
+                FatalErrorInFunction
+                    << "Condition " << r.cond.name.c_str() << " in " << h5
+                    << ": no impacts of " << sp[s]->name << " were counted"
+                    << " (collision frequency and impact energy need at"
+                    << " least one): sample longer (samplingTime) or use"
+                    << " more particles" << nl
+                    << "    constant/granularCoefficients is not written."
+                    << nl << exit(FatalError);
+            }
+        }
+    }
+
+    sdf::fit::FitOptions options;
+    options.maxIterations = std::size_t(settings.fitMaxIterations());
+
+    for (const bool isOmega : {true, false})
+    {
+        for (int s = 0; s < 2; ++s)
+        {
+            std::vector<sdf::fit::Observation> rows;
+            for (const StoredResult& r : results)
+            {
+                sdf::fit::Observation o;
+                o.condition.phi = r.cond.phi;
+                o.condition.x = r.cond.x;
+                o.condition.T = r.T;
+                o.condition.d = sp[s]->d;
+                o.value = isOmega ? r.impacts[s].omega : r.impacts[s].Wmean;
+                o.sigma =
+                    isOmega ? r.impacts[s].omegaError : r.impacts[s].WmeanError;
+                rows.push_back(o);
+            }
+            calibrated.push_back
+            (
+                fitCoefficient
+                (
+                    (isOmega ? "omega." : "Wmean.") + sp[s]->name,
+                    isOmega
+                  ? "collisions per second of one " + sp[s]->name
+                  + " particle [1/s]"
+                  : "mean mass-specific impact energy of a " + sp[s]->name
+                  + " particle [J/kg]",
+                    rows,
+                    isOmega
+                  ? settings.collisionFrequencyLaws()
+                  : settings.impactEnergyLaws(),
+                    options,
+                    settings
+                )
+            );
+        }
+    }
+
+    // The solver evaluates S = fMat x omega Wmean exp(-Wmin/Wmean), the
+    // sum over the impact spectrum when it is exponential. Per species, the
+    // ratio of the DEM spectrum's sum, sum_b f_b (W_b - Wmin)+, to
+    // omega Wmean exp(-Wmin/Wmean) (both measured, fMat x cancels) at
+    // thresholds Wmin = 0, 1 and 3 Wmean: 1 for an exponential spectrum
+    Info<< "Exponential-spectrum check (sum over the DEM impact spectrum /"
+        << " closed form, measured omega and Wmean; 1 if exponential):" << nl;
+    for (int s = 0; s < 2; ++s)
+    {
+        for (const double k : {0.0, 1.0, 3.0})
+        {
+            double lo = GREAT, hi = -GREAT;
+            for (const StoredResult& r : results)
+            {
+                const SpeciesImpacts& imp = r.impacts[s];
+                const double Wmin = k*imp.Wmean;
+                double sum = 0;
+                for (std::size_t b = 0; b < imp.spectrum.energy.size(); ++b)
+                {
+                    sum += imp.spectrum.frequency[b]
+                       *std::max(imp.spectrum.energy[b] - Wmin, 0.0);
+                }
+                const double closed =
+                    imp.omega*imp.Wmean*std::exp(-Wmin/imp.Wmean);
+                lo = std::min(lo, sum/closed);
+                hi = std::max(hi, sum/closed);
+            }
+            Info<< "    " << sp[s]->name << ", Wmin = " << k
+                << " Wmean: ratio in [" << fmt(lo).c_str() << ", "
+                << fmt(hi).c_str() << "] over " << label(results.size())
+                << " conditions" << nl;
+        }
+    }
+    Info<< endl;
+}
+
 } // End anonymous namespace
 
 
@@ -239,13 +574,20 @@ void Foam::fitAndReport
     std::vector<sdf::fit::CalibratedCoefficient> calibrated;
     std::optional<sdf::fit::FitResult> bestD, bestEta;
 
+    // D and eta: one fit each; breakage: the collision frequency omega and
+    // the mean impact energy Wmean of one particle of each species
     for (const word& coeff : coefficients)
     {
+        if (coeff == "breakage")
+        {
+            fitBreakage(h5, results, settings, calibrated);
+            continue;
+        }
+        const bool isD = coeff == "D";
         std::vector<sdf::fit::Observation> rows;
         bool allPositive = true;
         for (const StoredResult& r : results)
         {
-            const bool isD = coeff == "D";
             if (!isD && !r.hasEta)
             {
                 FatalErrorInFunction
@@ -266,79 +608,24 @@ void Foam::fitAndReport
 
         sdf::fit::FitOptions options;
         options.maxIterations = std::size_t(settings.fitMaxIterations());
-        wordList laws;
-        if (coeff == "D")
+        if (!isD && !allPositive)
         {
-            laws = settings.laws();
-        }
-        else
-        {
-            laws = settings.etaLaws();
-            if (!allPositive)
-            {
-                options.space = sdf::fit::FitSpace::linear;
-            }
+            options.space = sdf::fit::FitSpace::linear;
         }
 
-        Info<< "Fit of " << coeff << " ("
-            << (coeff == "D"
-                ? "diffusivity of " + settings.fine().name
-                : "kinetic sieving coefficient of " + settings.coarse().name).c_str()
-            << ") to " << label(rows.size()) << " rows, "
-            << (options.space == sdf::fit::FitSpace::linear ? "linear" : "log")
-            << " space:" << nl;
-
-        std::vector<sdf::fit::FitResult> fits;
-        for (const word& lawName : laws)
-        {
-            const sdf::fit::ConstitutiveLaw law =
-                sdf::fit::lawFromName(lawName, int(settings.etaDiameterPower()));
-            try
-            {
-                fits.push_back(sdf::fit::fitLaw(law, rows, options));
-            }
-            catch (const std::exception& err)
-            {
-                FatalErrorInFunction
-                    << "Fit of law '" << lawName << "' to " << coeff
-                    << " refused its data:" << nl << "    " << err.what() << nl
-                    << "    constant/granularCoefficients is not written."
-                    << nl << exit(FatalError);
-            }
-            reportFit(fits.back());
-        }
-
-        try
-        {
-            sdf::fit::ModelSelection sel = sdf::fit::selectModel(fits);
-            Info<< "  model selection by AIC for " << coeff << ":" << nl;
-            for (const auto& rk : sel.ranking)
-            {
-                Info<< "    " << rk.law.c_str() << ": AIC = " << fmt(rk.criterion).c_str()
-                    << ", delta = " << fmt(rk.delta).c_str()
-                    << ", weight = " << fmt(rk.weight).c_str() << nl;
-            }
-            for (const auto& f : sel.failed)
-            {
-                Warning
-                    << "Law '" << f.first.c_str() << "' for " << coeff
-                    << " did not converge and takes no part: "
-                    << f.second.c_str() << endl;
-            }
-            const sdf::fit::FitResult& best = fits[sel.best().index];
-            Info<< "  chosen for " << coeff << ": " << sel.best().law.c_str()
-                << nl << endl;
-            if (coeff == "D") bestD = best; else bestEta = best;
-            calibrated.push_back({coeff, best, sel});
-        }
-        catch (const std::exception& err)
-        {
-            FatalErrorInFunction
-                << "No law for " << coeff << " could be fitted:" << nl
-                << "    " << err.what() << nl
-                << "    constant/granularCoefficients is not written." << nl
-                << exit(FatalError);
-        }
+        const sdf::fit::CalibratedCoefficient chosen = fitCoefficient
+        (
+            coeff,
+            isD
+          ? "diffusivity of " + settings.fine().name
+          : "kinetic sieving coefficient of " + settings.coarse().name,
+            rows,
+            isD ? settings.laws() : settings.etaLaws(),
+            options,
+            settings
+        );
+        if (isD) bestD = chosen.fit; else bestEta = chosen.fit;
+        calibrated.push_back(chosen);
     }
 
     std::ostringstream text;

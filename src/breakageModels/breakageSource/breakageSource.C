@@ -187,12 +187,22 @@ Foam::tmp<Foam::fvScalarMatrix> Foam::breakageSource::source
     volScalarField& ni = const_cast<volScalarField&>(mixture_.n()[i]);
 
     tmp<fvScalarMatrix> tB(-fvm::Sp(lossRate(i), ni));
-    fvScalarMatrix& B = tB.ref();
 
+    // The gains from the coarser species, added to the matrix source in
+    // one pass per parent (as fvMatrix += field does: source -= V field),
+    // without a temporary field per parent: a class has up to all the
+    // coarser classes as parents
+    scalarField& source = tB.ref().source();
+    const scalarField& V = mixture_.mesh().V().field();
     for (const label j : parents_[i])
     {
-        B += weights_[j].volume[i]*selection_->S(j).internalField()
-            *mixture_.n()[j].internalField();
+        const scalar beta = weights_[j].volume[i];
+        const scalarField& Sj = selection_->S(j).primitiveField();
+        const scalarField& nj = mixture_.n()[j].primitiveField();
+        forAll(source, celli)
+        {
+            source[celli] -= beta*Sj[celli]*nj[celli]*V[celli];
+        }
     }
     return tB;
 }

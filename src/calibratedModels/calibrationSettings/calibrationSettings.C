@@ -17,7 +17,10 @@
 
 // * * * * * * * * * * * * * * * Static Data * * * * * * * * * * * * * * * * //
 
-const Foam::wordList Foam::calibrationSettings::validCoefficients({"D", "eta"});
+const Foam::wordList Foam::calibrationSettings::validCoefficients
+({
+    "D", "eta", "breakage"
+});
 
 const Foam::wordList Foam::calibrationSettings::validDLaws
 ({
@@ -29,6 +32,17 @@ const Foam::wordList Foam::calibrationSettings::validEtaLaws
     "sievingCompositionPowerLaw", "sievingPowerLaw"
 });
 
+const Foam::wordList
+Foam::calibrationSettings::validCollisionFrequencyLaws
+({
+    "collisionFrequencyGroups"
+});
+
+const Foam::wordList Foam::calibrationSettings::validImpactEnergyLaws
+({
+    "impactEnergyGroups"
+});
+
 
 namespace
 {
@@ -36,6 +50,7 @@ namespace
 const Foam::wordList validEntries
 ({
     "phi", "x", "T", "replicas", "coefficients", "laws", "etaLaws",
+    "collisionFrequencyLaws", "impactEnergyLaws",
     "etaDiameterPower", "fitMaxIterations",
     "particles", "mode", "plot", "concurrentConditions", "fromCase"
 });
@@ -232,11 +247,23 @@ Foam::calibrationSettings::calibrationSettings
                 << "Unknown coefficient '" << c << "' in entry 'coefficients'"
                 << nl << "    valid names: " << validCoefficients
                 << " (D: diffusivity of the fines, eta: kinetic sieving"
-                << " coefficient of the coarse)" << nl << exit(FatalIOError);
+                << " coefficient of the coarse, breakage: collision frequency"
+                << " and mean impact energy of both species)" << nl
+                << exit(FatalIOError);
         }
     }
     laws_ = readLawList(dict, "laws", validDLaws, "D");
     etaLaws_ = readLawList(dict, "etaLaws", validEtaLaws, "eta");
+    collisionFrequencyLaws_ = readLawList
+    (
+        dict, "collisionFrequencyLaws", validCollisionFrequencyLaws,
+        "omega"
+    );
+    impactEnergyLaws_ = readLawList
+    (
+        dict, "impactEnergyLaws", validImpactEnergyLaws,
+        "Wmean"
+    );
     etaDiameterPower_ = dict.getOrDefault<label>("etaDiameterPower", 1);
     fitMaxIterations_ = dict.getOrDefault<label>("fitMaxIterations", 2000);
     if (fitMaxIterations_ < 1)
