@@ -114,46 +114,33 @@ Foam::breakageSource::breakageSource
     }
     Info<< endl;
 
-    const fvMesh& mesh = mixture.mesh();
+    // The accumulated fields: read back on a restart, written with the
+    // species
+    auto accumulated = [&mixture](const word& name)
+    {
+        const fvMesh& mesh = mixture.mesh();
+        return new volScalarField
+        (
+            IOobject
+            (
+                name,
+                mesh.time().timeName(),
+                mesh,
+                IOobject::READ_IF_PRESENT,
+                IOobject::AUTO_WRITE
+            ),
+            mesh,
+            dimensionedScalar(name, dimless, Zero),
+            zeroGradientFvPatchScalarField::typeName
+        );
+    };
     if (dustSink_)
     {
-        dust_.reset
-        (
-            new volScalarField
-            (
-                IOobject
-                (
-                    "dust",
-                    mesh.time().timeName(),
-                    mesh,
-                    IOobject::READ_IF_PRESENT,
-                    IOobject::AUTO_WRITE
-                ),
-                mesh,
-                dimensionedScalar("dust", dimless, Zero),
-                zeroGradientFvPatchScalarField::typeName
-            )
-        );
+        dust_.reset(accumulated("dust"));
     }
     if (mixture.writeField("brokenVolume"))
     {
-        brokenVolume_.reset
-        (
-            new volScalarField
-            (
-                IOobject
-                (
-                    "brokenVolume",
-                    mesh.time().timeName(),
-                    mesh,
-                    IOobject::READ_IF_PRESENT,
-                    IOobject::AUTO_WRITE
-                ),
-                mesh,
-                dimensionedScalar("brokenVolume", dimless, Zero),
-                zeroGradientFvPatchScalarField::typeName
-            )
-        );
+        brokenVolume_.reset(accumulated("brokenVolume"));
     }
 }
 

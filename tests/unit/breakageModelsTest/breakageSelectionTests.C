@@ -18,7 +18,7 @@ Description
 
 \*---------------------------------------------------------------------------*/
 
-#include "granularModelsTestFixtures.H"
+#include "breakageTestFixtures.H"
 #include "breakageSource.H"
 #include "vogelPeukert.H"
 #include "mathematicalConstants.H"
@@ -29,10 +29,6 @@ using namespace unitTest;
 
 namespace
 {
-
-const granularMixture& mix() { return *testMixturePtr; }
-
-label species(const word& name) { return mix().names().find(name); }
 
 void setUniform(const scalar value)
 {

@@ -18,7 +18,7 @@ Description
 
 \*---------------------------------------------------------------------------*/
 
-#include "granularModelsTestFixtures.H"
+#include "breakageTestFixtures.H"
 #include "daughterSizeDistributionModel.H"
 #include "breakageSource.H"
 #include "mathematicalConstants.H"
@@ -28,10 +28,6 @@ using namespace unitTest;
 
 namespace
 {
-
-const granularMixture& mix() { return *testMixturePtr; }
-
-label species(const word& name) { return mix().names().find(name); }
 
 scalar volumeOf(const word& name)
 {

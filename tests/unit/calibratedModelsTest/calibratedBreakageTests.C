@@ -21,6 +21,8 @@ Description
 #include "granularModelsTestFixtures.H"
 #include "breakageModel.H"
 #include "calibratedBreakage.H"
+#include "vogelPeukert.H"
+#include "vogelPeukert.H"
 #include "OFstream.H"
 
 #include <cmath>
@@ -109,19 +111,19 @@ TEST(calibratedBreakage, closedFormByHand)
     // S = 2*1e-3*100*112.5*exp(-50/112.5) = 22.5*exp(-4/9) = 14.4265587...
     EXPECT_NEAR
     (
-        breakageModels::calibrated::rate(2, 0.05, 1e-3, 100, 112.5),
+        breakageModels::vogelPeukert::exponentialSpectrumRate(2, 0.05, 1e-3, 100, 112.5),
         14.4265587,
         1e-6
     );
     EXPECT_NEAR
     (
-        breakageModels::calibrated::rate(2, 0.05, 1e-3, 100, 112.5),
+        breakageModels::vogelPeukert::exponentialSpectrumRate(2, 0.05, 1e-3, 100, 112.5),
         22.5*std::exp(-4.0/9.0),
         1e-12
     );
     // No impacts or no energy (T = 0): no breakage
-    EXPECT_EQ(breakageModels::calibrated::rate(2, 0.05, 1e-3, 0, 112.5), 0);
-    EXPECT_EQ(breakageModels::calibrated::rate(2, 0.05, 1e-3, 100, 0), 0);
+    EXPECT_EQ(breakageModels::vogelPeukert::exponentialSpectrumRate(2, 0.05, 1e-3, 0, 112.5), 0);
+    EXPECT_EQ(breakageModels::vogelPeukert::exponentialSpectrumRate(2, 0.05, 1e-3, 100, 0), 0);
 }
 
 

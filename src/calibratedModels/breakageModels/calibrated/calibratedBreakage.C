@@ -7,11 +7,11 @@
 \*---------------------------------------------------------------------------*/
 
 #include "calibratedBreakage.H"
+#include "vogelPeukert.H"
 #include "calibrationSettings.H"
 #include "addToRunTimeSelectionTable.H"
 #include "modelCoeffs.H"
 
-#include "fit/BreakageRate.hpp"
 
 #include <string>
 
@@ -137,29 +137,6 @@ Foam::breakageModels::calibrated::calibrated
 }
 
 
-Foam::scalar Foam::breakageModels::calibrated::rate
-(
-    const scalar fMat,
-    const scalar xWmMin,
-    const scalar x,
-    const scalar omega,
-    const scalar Wmean
-)
-{
-    if (!(omega > 0) || !(Wmean > 0))
-    {
-        return 0;
-    }
-    return sdf::fit::breakage::vogelPeukertRateExponentialSpectrum
-    (
-        sdf::fit::breakage::VogelPeukertMaterial{fMat, xWmMin},
-        x,
-        omega,
-        Wmean
-    );
-}
-
-
 void Foam::breakageModels::calibrated::calcS
 (
     const label j,
@@ -190,7 +167,10 @@ void Foam::breakageModels::calibrated::calcS
     {
         Sc[celli] =
             Tc[celli] > 0
-          ? rate(fMat_, xWmMin_, dj, omega[celli], Wmean[celli])
+          ? vogelPeukert::exponentialSpectrumRate
+            (
+                fMat_, xWmMin_, dj, omega[celli], Wmean[celli]
+            )
           : 0;
     }
 }
