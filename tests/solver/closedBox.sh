@@ -65,17 +65,17 @@ DICT
 import re, sys
 totals = []
 for line in open(sys.argv[1]):
-    if line.startswith("Solids:"):
+    if line.startswith("Solids:") or line.startswith("Initial solids:"):
         m = re.search(r"total volume (\S+)\s+dust volume (\S+)", line)
         if m:
             totals.append((float(m.group(1)), float(m.group(2))))
 if len(totals) < 10:
     print("too few steps parsed"); sys.exit(1)
-# The initial state before the first step: the first step's total plus dust
+# The state the run starts from (the solver's "Initial solids:" line)
 first = totals[0][0] + totals[0][1]
 rel = max(abs(s + d - first) for s, d in totals) / first
-print("solids + dust: %.12e, max relative change over %d steps %.2e; dust at the end %.4e (%.2f %% of the solids)"
-      % (first, len(totals), rel, totals[-1][1], 100 * totals[-1][1] / first))
+print("solids + dust: %.12e at the start, max relative change over %d steps %.2e; dust at the end %.4e (%.2f %% of the solids)"
+      % (first, len(totals) - 1, rel, totals[-1][1], 100 * totals[-1][1] / first))
 sys.exit(0 if rel < 1e-10 and totals[-1][1] > 1e-3 * first else 1)
 PY
     python3 -m sdfoam.fieldStats "$serial" bounds --tol 1e-8 || return 1

@@ -162,8 +162,9 @@ test_outlet_composition_function_object()
 # silo2D with breakage (Allrun -breakage, 3 s): the sizeDistribution function
 # object writes volume and number per species, dust and broken volume; the
 # solids in the silo + dust + what left through outlet and top stay equal to
-# the start (1e-6 relative, as the discharge balance above); material broke;
-# every field finite and bounded
+# the start (1e-6 relative, as the discharge balance above: the outlet files'
+# time integration); 0.4-0.7 % of the solids broke; every field finite and
+# bounded
 test_silo_breakage()
 {
     local dir="$workRoot/siloBreakage"
@@ -198,8 +199,9 @@ worst = max(abs(inSilo(r) + o + t - initial) for r, o, t in zip(sd, out, top)) /
 broken = sd[-1][col["broken[m3]"]]
 print("solids in the silo + dust + discharged: max relative change %.2e over %d steps; broken %.3e m3 (%.3f %% of the solids), dust %.3e m3"
       % (worst, len(sd), broken, 100 * broken / initial, sd[-1][col["dust[m3]"]]))
-nRatio = sd[-1][col["number.coarse"]] * (2e-3) ** 3 / (sd[-1][col["volume.coarse[m3]"]] * 6 / 3.141592653589793)
-sys.exit(0 if worst < 1e-6 and broken > 1e-4 * initial and abs(nRatio - 1) < 1e-9 else 1)
+# The broken share of the solids in 3 s that docs/user/breakage.md quotes
+# (0.52 % when written): a change of the model or of the flow shows here
+sys.exit(0 if worst < 1e-6 and 0.004 < broken / initial < 0.007 else 1)
 PY
     grep -q "Selecting breakage model powerLaw" "$dir/log.segregationDegradationFoam" || { echo "breakage not selected"; return 1; }
     python3 -m sdfoam.fieldStats "$dir" bounds --tol 1e-8

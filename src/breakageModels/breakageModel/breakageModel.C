@@ -35,11 +35,11 @@ void Foam::breakageModel::checkNonNegative
     const scalar value
 ) const
 {
-    if (!(value >= 0))
+    if (!(value >= 0) || !std::isfinite(value))
     {
         FatalIOErrorInFunction(coeffs_)
             << "Breakage coefficient '" << key << " " << value
-            << "' in " << coeffs_.name() << " must be >= 0" << nl
+            << "' in " << coeffs_.name() << " must be finite and >= 0" << nl
             << exit(FatalIOError);
     }
 }

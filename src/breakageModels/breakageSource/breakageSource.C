@@ -8,6 +8,7 @@
 
 #include "breakageSource.H"
 #include "fvmSup.H"
+#include "fvmDdt.H"
 #include "zeroGradientFvPatchFields.H"
 #include "modelCoeffs.H"
 
@@ -195,34 +196,51 @@ Foam::tmp<Foam::fvScalarMatrix> Foam::breakageSource::source
 }
 
 
-void Foam::breakageSource::accumulate(const dimensionedScalar& deltaT)
+void Foam::breakageSource::accumulate()
 {
     if (!active() || (!dust_ && !brokenVolume_))
     {
         return;
     }
+
+    // The rates with this step's solved fields, as the species saw them
+    volScalarField::Internal dustRate
+    (
+        IOobject("dustRate", mixture_.mesh().time().timeName(), mixture_.mesh()),
+        mixture_.mesh(),
+        dimensionedScalar("0", inv(dimTime), Zero)
+    );
+    volScalarField::Internal brokenRate(dustRate);
     forAll(weights_, j)
     {
-        const volScalarField::Internal rate
-        (
-            selection_->S(j).internalField()*mixture_.n()[j].internalField()
-        );
-        if (dust_ && weights_[j].dustVolume > 0)
+        const scalarField& Sj = selection_->S(j).primitiveField();
+        const scalarField& nj = mixture_.n()[j].primitiveField();
+        const scalar toDust = weights_[j].dustVolume;
+        const scalar broken = 1 - weights_[j].volume[j];
+        forAll(dustRate, celli)
         {
-            dust_->ref() += deltaT*weights_[j].dustVolume*rate;
-        }
-        if (brokenVolume_)
-        {
-            brokenVolume_->ref() += deltaT*(1 - weights_[j].volume[j])*rate;
+            dustRate[celli] += toDust*Sj[celli]*nj[celli];
+            brokenRate[celli] += broken*Sj[celli]*nj[celli];
         }
     }
+
+    // ddt(field) = rate with the case's time scheme, the one the species
+    // use: solids + dust is then kept by Euler, backward or Crank-Nicolson
+    // alike. The matrix is diagonal (no transport): field = source/diag
+    auto advance = [](volScalarField& field, const volScalarField::Internal& rate)
+    {
+        fvScalarMatrix eqn(fvm::ddt(field));
+        eqn -= rate;
+        field.primitiveFieldRef() = eqn.source()/eqn.diag();
+        field.correctBoundaryConditions();
+    };
     if (dust_)
     {
-        dust_->correctBoundaryConditions();
+        advance(dust_(), dustRate);
     }
     if (brokenVolume_)
     {
-        brokenVolume_->correctBoundaryConditions();
+        advance(brokenVolume_(), brokenRate);
     }
 }
 

@@ -13,6 +13,9 @@
 #include "LawFormulas.hpp"
 #include "BreakageRate.hpp"
 
+#include <cmath>
+#include <limits>
+
 namespace Foam
 {
 namespace breakageModels
@@ -45,7 +48,8 @@ Foam::breakageModels::vogelPeukert::vogelPeukert
         modelCoeffs::get(coeffs_, "xWmMin", pow3(dimLength)/sqr(dimTime))
        .value()
     ),
-    phiMax_(coeffs_.getOrDefault<scalar>("phiMax", 0.6))
+    // Optional, default 0.63 (random close packing), as kineticTheory
+    phiMax_(coeffs_.getOrDefault<scalar>("phiMax", 0.63))
 {
     checkNonNegative("fMat", fMat_);
     checkNonNegative("xWmMin", xWmMin_);
@@ -67,6 +71,11 @@ Foam::scalar Foam::breakageModels::vogelPeukert::exponentialSpectrumRate
     const scalar Wbar
 )
 {
+    if (!std::isfinite(Wbar) || !std::isfinite(impactRate))
+    {
+        // Not a rate: breakageModel::correct stops naming species and cell
+        return Wbar*impactRate*std::numeric_limits<scalar>::quiet_NaN();
+    }
     if (!(Wbar > 0) || !(impactRate > 0))
     {
         return 0;
@@ -92,7 +101,7 @@ void Foam::breakageModels::vogelPeukert::calcS
 {
     const scalar pi = constant::mathematical::pi;
     const scalar dj = mixture_.d(j);
-    const scalar mj = mixture_.rho(j)*pi*pow3(dj)/6;
+    const scalar mj = mixture_.rho(j)*mixture_.particleVolume(j);
 
     const scalarField& T = granularTemperature.T().primitiveField();
     const scalarField& phi = mixture_.nTotal().primitiveField();
@@ -102,7 +111,7 @@ void Foam::breakageModels::vogelPeukert::calcS
     forAll(mixture_.n(), k)
     {
         const scalar dk = mixture_.d(k);
-        const scalar vk = pi*pow3(dk)/6;
+        const scalar vk = mixture_.particleVolume(k);
         const scalar mk = mixture_.rho(k)*vk;
         const scalar sigma = 0.5*(dj + dk);
         const scalar massRatio = mj*mk/sqr(mj + mk);

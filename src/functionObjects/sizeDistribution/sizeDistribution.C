@@ -9,7 +9,6 @@
 #include "sizeDistribution.H"
 #include "caseFields.H"
 #include "fvc.H"
-#include "mathematicalConstants.H"
 #include "OSspecific.H"
 #include "addToRunTimeSelectionTable.H"
 
@@ -40,11 +39,28 @@ Foam::functionObjects::sizeDistribution::sizeDistribution
     species_(caseSpecies(mesh_)),
     file_(),
     volume_(species_.size(), Zero),
-    dust_(-1),
-    broken_(-1),
+    hasDust_(false),
+    hasBroken_(false),
+    dust_(0),
+    broken_(0),
     startTimeName_(runTime.timeName()),
     headerWritten_(false)
 {
+    const dictionary properties(caseGranularProperties(mesh_));
+    if (properties.isDict("breakage"))
+    {
+        const dictionary& breakage = properties.subDict("breakage");
+        const bool breaks =
+            breakage.getOrDefault<word>("model", "none") != "none";
+        hasDust_ =
+            breaks
+         && breakage.getOrDefault<word>("fines", "finestClass") == "dust";
+        hasBroken_ =
+            breaks
+         && properties.getOrDefault<wordList>("writeFields", wordList())
+           .found("brokenVolume");
+    }
+
     std::stable_sort
     (
         species_.begin(),
@@ -69,13 +85,17 @@ bool Foam::functionObjects::sizeDistribution::execute()
         ).value();
     }
 
-    auto optionalVolume = [this](const word& fieldName)
+    auto optionalVolume = [this](const bool column, const word& fieldName)
     {
+        if (!column)
+        {
+            return scalar(0);
+        }
         tmp<volScalarField> tfield(registeredOrRead(mesh_, fieldName, true));
-        return tfield.valid() ? fvc::domainIntegrate(tfield()).value() : -1;
+        return tfield.valid() ? fvc::domainIntegrate(tfield()).value() : 0;
     };
-    dust_ = optionalVolume("dust");
-    broken_ = optionalVolume("brokenVolume");
+    dust_ = optionalVolume(hasDust_, "dust");
+    broken_ = optionalVolume(hasBroken_, "brokenVolume");
     return true;
 }
 
@@ -113,11 +133,11 @@ bool Foam::functionObjects::sizeDistribution::write()
         {
             os << " number." << s.name;
         }
-        if (dust_ >= 0)
+        if (hasDust_)
         {
             os << " dust[m3]";
         }
-        if (broken_ >= 0)
+        if (hasBroken_)
         {
             os << " broken[m3]";
         }
@@ -134,13 +154,13 @@ bool Foam::functionObjects::sizeDistribution::write()
     forAll(species_, k)
     {
         os << ' '
-           << volume_[k]/(constant::mathematical::pi*pow3(species_[k].d)/6);
+           << volume_[k]/species_[k].particleVolume();
     }
-    if (dust_ >= 0)
+    if (hasDust_)
     {
         os << ' ' << dust_;
     }
-    if (broken_ >= 0)
+    if (hasBroken_)
     {
         os << ' ' << broken_;
     }

@@ -231,7 +231,7 @@ TEST(breakageSelection, implicitSweepKeepsSolidsPlusDust)
         fvScalarMatrix nEqn(fvm::ddt(n) - breakage.source(k));
         nEqn.solve(dictOf("solver diagonal;"));
     }
-    breakage.accumulate(runTime.deltaT());
+    breakage.accumulate();
     testMixturePtr->correct();
 
     const scalar after =

@@ -31,7 +31,7 @@ namespace
 
 scalar volumeOf(const word& name)
 {
-    return daughterSizeDistributionModel::particleVolume(mix(), species(name));
+    return mix().particleVolume(species(name));
 }
 
 //- Volume and number balance of every parent for one daughter model
@@ -77,8 +77,8 @@ void expectConserving
             EXPECT_NEAR
             (
                 w.volume[i],
-                w.number[i]*daughterSizeDistributionModel::particleVolume(mix(), i)
-               /daughterSizeDistributionModel::particleVolume(mix(), j),
+                w.number[i]*mix().particleVolume(i)
+               /mix().particleVolume(j),
                 1e-14
             );
             // Only the parent's material receives fragments
@@ -153,6 +153,40 @@ TEST(breakageWeights, austinConservesVolumeAndNumber)
         EXPECT_NEAR(w.volumeBalance(), 1, 1e-13);
         EXPECT_TRUE(std::isinf(w.dustNumber) || w.dustVolume == 0);
         EXPECT_TRUE(std::isfinite(w.numberOnGrid()));
+    }
+}
+
+
+TEST(breakageWeights, austinIsContinuousThroughExponentOne)
+{
+    // gamma = 3 is p = 1 in volume (a logarithm in the number integral);
+    // just beside it the general form must give the same weights
+    autoPtr<daughterSizeDistributionModel> at
+    (
+        daughterSizeDistributionModel::New
+        (
+            dictOf("model austin; austinCoeffs { phi 0.5; gamma 3; beta 6; }"),
+            mix()
+        )
+    );
+    autoPtr<daughterSizeDistributionModel> beside
+    (
+        daughterSizeDistributionModel::New
+        (
+            dictOf("model austin; austinCoeffs { phi 0.5; gamma 3.000000003; beta 6; }"),
+            mix()
+        )
+    );
+    const label p = species("s4");
+    const labelList grid(daughterSizeDistributionModel::classGrid(mix(), p));
+    const breakageWeights w1 = at->weights(p, grid, true);
+    const breakageWeights w2 = beside->weights(p, grid, true);
+    EXPECT_NEAR(w1.volumeBalance(), 1, 1e-13);
+    EXPECT_TRUE(std::isinf(w1.dustNumber));
+    forAll(w1.number, i)
+    {
+        EXPECT_TRUE(std::isfinite(w1.number[i]));
+        EXPECT_NEAR(w1.number[i], w2.number[i], 1e-8*(1 + w1.number[i]));
     }
 }
 

@@ -10,6 +10,7 @@
 #include "addToRunTimeSelectionTable.H"
 #include "modelCoeffs.H"
 
+#include <cmath>
 #include <limits>
 
 namespace Foam
@@ -71,12 +72,21 @@ Foam::scalar Foam::daughterSizeDistributionModels::austin::termNumber
     {
         return std::numeric_limits<scalar>::infinity();
     }
-    if (mag(p - 1) < 1e-12)
+    if (a <= 0)
     {
-        return c*Foam::log(b/a);
+        // p > 1 here (p <= 1 returned above):
+        // int_0^b v^(p-2) dv = b^(p-1)/(p - 1)
+        return c*p*Foam::pow(u, 1 - p)*Foam::pow(b, p - 1)/(p - 1);
     }
-    return c*p*Foam::pow(u, 1 - p)
-       *(Foam::pow(b, p - 1) - Foam::pow(a, p - 1))/(p - 1);
+    // (b^(p-1) - a^(p-1))/(p - 1) = a^(p-1) expm1((p - 1) ln(b/a))/(p - 1),
+    // without the cancellation of the difference near p = 1 (ln(b/a) at 1)
+    const scalar lnRatio = Foam::log(b/a);
+    const scalar q = p - 1;
+    const scalar integral =
+        mag(q*lnRatio) < 1e-12
+      ? lnRatio*(1 + 0.5*q*lnRatio)
+      : std::expm1(q*lnRatio)/q;
+    return c*p*Foam::pow(a/u, q)*integral;
 }
 
 

@@ -8,7 +8,6 @@
 
 #include "daughterSizeDistributionModel.H"
 #include "modelCoeffs.H"
-#include "mathematicalConstants.H"
 #include "SortableList.H"
 
 namespace Foam
@@ -54,16 +53,6 @@ Foam::scalar Foam::daughterSizeDistributionModel::number
 }
 
 
-Foam::scalar Foam::daughterSizeDistributionModel::particleVolume
-(
-    const granularMixture& mixture,
-    const label i
-)
-{
-    return constant::mathematical::pi*pow3(mixture.d(i))/6;
-}
-
-
 Foam::labelList Foam::daughterSizeDistributionModel::classGrid
 (
     const granularMixture& mixture,
@@ -81,14 +70,17 @@ Foam::labelList Foam::daughterSizeDistributionModel::classGrid
         {
             continue;
         }
-        if (i != parent && mag(mixture.d(i) - dParent) <= 1e-12*dParent)
+        // Pivots closer than this make the fixed-pivot hat functions
+        // (divided by x_(i+1) - x_i) lose their digits
+        if (i != parent && mag(mixture.d(i) - dParent) <= 1e-6*dParent)
         {
             FatalIOErrorInFunction(mixture)
                 << "Species " << mixture.names()[i] << " and "
                 << mixture.names()[parent] << " in " << mixture.objectPath()
                 << " have the same material (rho " << rhoParent
-                << ") and size (d " << dParent << "): breakage needs one"
-                << " class per size" << nl << exit(FatalIOError);
+                << ") and the same size (d " << mixture.d(i) << ", "
+                << dParent << ", within 1e-6): breakage needs one class per"
+                << " size" << nl << exit(FatalIOError);
         }
         if (mixture.d(i) <= dParent)
         {
@@ -121,7 +113,7 @@ Foam::breakageWeights Foam::daughterSizeDistributionModel::weights
     scalarList x(grid.size());
     forAll(grid, g)
     {
-        x[g] = particleVolume(mixture_, grid[g]);
+        x[g] = mixture_.particleVolume(grid[g]);
     }
     const label m = grid.size() - 1;
     const scalar u = x[m];

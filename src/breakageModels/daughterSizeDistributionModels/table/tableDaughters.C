@@ -60,7 +60,7 @@ Foam::breakageWeights Foam::daughterSizeDistributionModels::table::weights
     w.number.setSize(mixture_.size(), Zero);
 
     const word& parentName = mixture_.names()[parent];
-    const scalar u = particleVolume(mixture_, parent);
+    const scalar u = mixture_.particleVolume(parent);
 
     if (!coeffs_.isDict(parentName))
     {
@@ -139,7 +139,7 @@ Foam::breakageWeights Foam::daughterSizeDistributionModels::table::weights
         else
         {
             w.volume[i] = fraction;
-            w.number[i] = fraction*u/particleVolume(mixture_, i);
+            w.number[i] = fraction*u/mixture_.particleVolume(i);
         }
     }
 
