@@ -37,7 +37,7 @@ PY
 # uniform binary fragments, fines to the dust sink): solids + dust
 # conserved to 1e-10 relative over every step, 0 <= n_i <= phi, dust
 # formed; and the same case on 2 MPI ranks equals the serial run (species
-# and dust) to 1e-9
+# and dust) to 1e-9, and so does the sizeDistribution function object's file
 test_closed_box_breakage()
 {
     local serial="$workRoot/closedBoxBreakage" parallel="$workRoot/closedBoxBreakageParallel"
@@ -54,6 +54,17 @@ breakage
     powerLawCoeffs { k 0.4; dRef 2e-3; a 3; }
     daughterSizeDistribution { model uniformBinary; }
     fines       dust;
+}
+DICT
+        foamDictionary -entry writeFields -set "(nTotal D brokenVolume)" "$d/constant/granularProperties" > /dev/null
+        cat >> "$d/system/controlDict" <<'DICT'
+functions
+{
+    sizeDistribution
+    {
+        type    sizeDistribution;
+        libs    ("libsegregationDegradationModels.so");
+    }
 }
 DICT
         blockMesh -case "$d" > "$d/log.blockMesh" 2>&1 || { cat "$d/log.blockMesh"; return 1; }
@@ -93,6 +104,23 @@ da = foamcase.readScalarField(a, t, "dust")
 db = foamcase.readScalarField(b, foamcase.latestTime(b), "dust")
 worst = max(abs(x - y) for x, y in zip(da, db))
 print("dust: max |parallel - serial| %.3e" % worst)
-sys.exit(0 if worst <= 1e-9 else 1)
+
+# The sizeDistribution function object: the same rows on 2 ranks (values
+# reduced over the processors), its broken volume the dust's (the box's
+# fragments above the fine pivot stay in the fine class: broken >= dust)
+def rows(case):
+    path = case + "/postProcessing/sizeDistribution/0/sizeDistribution.dat"
+    lines = [l for l in open(path) if l.strip()]
+    header = [l for l in lines if l.startswith("#")][-1].split()[1:]
+    return header, [list(map(float, l.split())) for l in lines if not l.startswith("#")]
+hs, rs = rows(a)
+hp, rp = rows(b)
+if hs != hp or len(rs) != len(rp) or "dust[m3]" not in hs or "broken[m3]" not in hs:
+    print("sizeDistribution headers or row counts differ:", hs, hp, len(rs), len(rp)); sys.exit(1)
+rel = max(abs(x - y) / max(abs(x), 1e-300) for r, q in zip(rs, rp) for x, y in zip(r, q) if x != 0)
+last = dict(zip(hs, rs[-1]))
+print("sizeDistribution: %d rows, max relative |parallel - serial| %.2e; at the end dust %.4e, broken %.4e m3"
+      % (len(rs), rel, last["dust[m3]"], last["broken[m3]"]))
+sys.exit(0 if worst <= 1e-9 and rel <= 1e-9 and last["broken[m3]"] >= last["dust[m3]"] > 0 else 1)
 PY
 }
