@@ -169,11 +169,10 @@ Foam::breakageSource::lossRate(const label j) const
 
 Foam::tmp<Foam::fvScalarMatrix> Foam::breakageSource::source
 (
-    const label i
+    const label i,
+    volScalarField& ni
 ) const
 {
-    volScalarField& ni = const_cast<volScalarField&>(mixture_.n()[i]);
-
     tmp<fvScalarMatrix> tB(-fvm::Sp(lossRate(i), ni));
 
     // The gains from the coarser species, added to the matrix source in

@@ -228,7 +228,7 @@ TEST(breakageSelection, implicitSweepKeepsSolidsPlusDust)
     {
         volScalarField& n = testMixturePtr->n()[k];
         n.storeOldTime();
-        fvScalarMatrix nEqn(fvm::ddt(n) - breakage.source(k));
+        fvScalarMatrix nEqn(fvm::ddt(n) - breakage.source(k, n));
         nEqn.solve(dictOf("solver diagonal;"));
     }
     breakage.accumulate();
