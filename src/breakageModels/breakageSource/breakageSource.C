@@ -26,27 +26,18 @@ Foam::dictionary Foam::breakageSource::selectionDict
 }
 
 
-// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
-
-Foam::breakageSource::breakageSource
+Foam::List<Foam::breakageWeights> Foam::breakageSource::fragmentWeights
 (
     const granularMixture& mixture,
-    const dictionary& breakageDict
+    const dictionary& breakageDict,
+    bool& dustSink
 )
-:
-    mixture_(mixture),
-    selection_(breakageModel::New(selectionDict(breakageDict), mixture)),
-    dustSink_(false)
 {
-    if (!selection_->active())
-    {
-        return;
-    }
-
+    dustSink = false;
     const word fines(breakageDict.getOrDefault<word>("fines", "finestClass"));
     if (fines == "dust")
     {
-        dustSink_ = true;
+        dustSink = true;
     }
     else if (fines != "finestClass")
     {
@@ -66,25 +57,25 @@ Foam::breakageSource::breakageSource
             << "    e.g. daughterSizeDistribution { model uniformBinary; }"
             << nl << exit(FatalIOError);
     }
-    daughters_ = daughterSizeDistributionModel::New
+    const autoPtr<daughterSizeDistributionModel> daughters
     (
-        breakageDict.subDict("daughterSizeDistribution"),
-        mixture
+        daughterSizeDistributionModel::New
+        (
+            breakageDict.subDict("daughterSizeDistribution"),
+            mixture
+        )
     );
 
-    weights_.setSize(mixture.size());
-    parents_.setSize(mixture.size());
-    Info<< "Breakage: fragments on the class grid (volume fraction of the"
-        << " parent, fragments per event)" << nl;
-    forAll(weights_, j)
+    List<breakageWeights> weights(mixture.size());
+    forAll(weights, j)
     {
         const labelList grid
         (
             daughterSizeDistributionModel::classGrid(mixture, j)
         );
-        weights_[j] = daughters_->weights(j, grid, dustSink_);
+        weights[j] = daughters->weights(j, grid, dustSink);
 
-        const breakageWeights& w = weights_[j];
+        const breakageWeights& w = weights[j];
         if (mag(w.volumeBalance() - 1) > 1e-9)
         {
             FatalIOErrorInFunction(breakageDict)
@@ -93,7 +84,36 @@ Foam::breakageSource::breakageSource
                 << " volume (must be 1): daughterSizeDistribution in "
                 << breakageDict.name() << nl << exit(FatalIOError);
         }
+    }
+    return weights;
+}
 
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::breakageSource::breakageSource
+(
+    const granularMixture& mixture,
+    const dictionary& breakageDict
+)
+:
+    mixture_(mixture),
+    selection_(breakageModel::New(selectionDict(breakageDict), mixture)),
+    dustSink_(false)
+{
+    if (!selection_->active())
+    {
+        return;
+    }
+
+    weights_ = fragmentWeights(mixture, breakageDict, dustSink_);
+
+    parents_.setSize(mixture.size());
+    Info<< "Breakage: fragments on the class grid (volume fraction of the"
+        << " parent, fragments per event)" << nl;
+    forAll(weights_, j)
+    {
+        const breakageWeights& w = weights_[j];
         Info<< "    " << mixture.names()[j] << " ->";
         forAll(w.volume, i)
         {

@@ -30,13 +30,17 @@ namespace functionObjects
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
 Foam::tmp<Foam::surfaceScalarField>
-Foam::functionObjects::outletComposition::flux() const
+Foam::functionObjects::outletComposition::flux
+(
+    const word& phiName,
+    const bool optional
+) const
 {
     if (postProcess)
     {
         IOobject phiHeader
         (
-            phiName_,
+            phiName,
             time_.timeName(),
             mesh_,
             IOobject::MUST_READ,
@@ -50,12 +54,16 @@ Foam::functionObjects::outletComposition::flux() const
     }
 
     const surfaceScalarField* registered =
-        mesh_.findObject<surfaceScalarField>(phiName_);
+        mesh_.findObject<surfaceScalarField>(phiName);
+    if (!registered && optional)
+    {
+        return tmp<surfaceScalarField>();
+    }
     if (!registered)
     {
         FatalErrorInFunction
             << "Function object " << name() << ": no face flux '"
-            << phiName_ << "' at time " << time_.timeName()
+            << phiName << "' at time " << time_.timeName()
             << " (registered or written in the time directory)" << nl
             << exit(FatalError);
     }
@@ -183,13 +191,17 @@ bool Foam::functionObjects::outletComposition::read(const dictionary& dict)
 
 bool Foam::functionObjects::outletComposition::execute()
 {
-    const tmp<surfaceScalarField> tphi(flux());
+    const tmp<surfaceScalarField> tphi(flux(phiName_));
     const surfaceScalarField& phi = tphi();
 
+    // A species with a flux of its own (phi.<species>, bulkFlow
+    // particlePass) crosses with it
     List<tmp<volScalarField>> n(species_.size());
+    List<tmp<surfaceScalarField>> speciesPhi(species_.size());
     forAll(species_, k)
     {
         n[k] = registeredOrRead(mesh_, "n." + species_[k].name);
+        speciesPhi[k] = flux(phiName_ + "." + species_[k].name, true);
     }
 
     // The solver's time step; between the processed times afterwards
@@ -208,8 +220,12 @@ bool Foam::functionObjects::outletComposition::execute()
         flows[0] = gSum(phip);
         forAll(species_, k)
         {
+            const scalarField& phik =
+                speciesPhi[k].valid()
+              ? speciesPhi[k]().boundaryField()[patchi]
+              : phip;
             const scalar massFlow =
-                species_[k].rho*gSum(phip*n[k]().boundaryField()[patchi]);
+                species_[k].rho*gSum(phik*n[k]().boundaryField()[patchi]);
             flows[k + 1] = massFlow;
             cumulative_[pi][k] += massFlow*dt;
         }

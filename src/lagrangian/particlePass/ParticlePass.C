@@ -1,0 +1,554 @@
+/*---------------------------------------------------------------------------*\
+  =========                 |
+  \\      /  F ield         | segregationDegradationFoam
+   \\    /   O peration     |
+    \\  /    A nd           |
+     \\/     M anipulation  |
+\*---------------------------------------------------------------------------*/
+
+#include "ParticlePass.H"
+#include "caseFields.H"
+#include "parcelSpecies.H"
+#include "volFields.H"
+#include "surfaceFields.H"
+#include "wallPolyPatch.H"
+#include "processorPolyPatch.H"
+#include "unitConversion.H"
+#include "OFstream.H"
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+template<class CloudType>
+Foam::label Foam::ParticlePass<CloudType>::speciesOf(const scalar d) const
+{
+    return parcelSpecies(species_, d);
+}
+
+
+template<class CloudType>
+bool Foam::ParticlePass<CloudType>::recording() const
+{
+    return this->owner().mesh().time().value() > startTime_;
+}
+
+
+template<class CloudType>
+Foam::scalar Foam::ParticlePass<CloudType>::span() const
+{
+    return max(this->owner().mesh().time().value() - startTime_, scalar(0));
+}
+
+
+template<class CloudType>
+void Foam::ParticlePass<CloudType>::writeFields() const
+{
+    const fvMesh& mesh = this->owner().mesh();
+    const scalar T = span();
+    if (!(T > 0))
+    {
+        return;
+    }
+    const surfaceScalarField& phiGas =
+        mesh.template lookupObject<surfaceScalarField>("phi");
+    const labelUList& own = mesh.owner();
+    const labelUList& nei = mesh.neighbour();
+    const scalarField& V = mesh.V().field();
+
+    auto ioNew = [&mesh](const word& name)
+    {
+        return IOobject
+        (
+            name,
+            mesh.time().timeName(),
+            mesh,
+            IOobject::NO_READ,
+            IOobject::NO_WRITE,
+            false
+        );
+    };
+
+    forAll(species_, j)
+    {
+        const word& name = species_[j].name;
+
+        volScalarField alpha
+        (
+            ioNew("alphaPass." + name),
+            mesh,
+            dimensionedScalar(dimless, Zero),
+            zeroGradientFvPatchScalarField::typeName
+        );
+        alpha.primitiveFieldRef() = residence_[j]/(V*T);
+        alpha.correctBoundaryConditions();
+        alpha.write();
+
+        volVectorField U
+        (
+            ioNew("UPass." + name),
+            mesh,
+            dimensionedVector(dimVelocity, Zero),
+            zeroGradientFvPatchVectorField::typeName
+        );
+        forAll(U, celli)
+        {
+            if (residence_[j][celli] > 0)
+            {
+                U[celli] = momentumResidence_[j][celli]/residence_[j][celli];
+            }
+        }
+        U.correctBoundaryConditions();
+        U.write();
+
+        // The class's own volume flux: its mean velocity UPass (residence-
+        // weighted, so alphaPass UPass is the time-averaged solids flux)
+        // interpolated to the faces it crossed, from one side where only
+        // one cell saw it; 0 on faces it never crossed next to a cell it
+        // visited (the pass says nothing went there); the gas flux between
+        // cells it never visited (its fragments move with the gas where
+        // the class itself never went). Not the crossed volume over the
+        // upwind cell's alpha: that ratio explodes in cells a few
+        // particles only clipped
+        surfaceScalarField phi(ioNew("phiPass." + name), phiGas);
+        const vectorField& Sf = mesh.Sf().primitiveField();
+        const scalarField& w = mesh.weights().primitiveField();
+        forAll(nei, facei)
+        {
+            const bool o = residence_[j][own[facei]] > 0;
+            const bool n = residence_[j][nei[facei]] > 0;
+            if (!o && !n)
+            {
+                continue;
+            }
+            if (!crossings_[j][facei])
+            {
+                phi[facei] = 0;
+            }
+            else if (o && n)
+            {
+                phi[facei] =
+                    Sf[facei]
+                  & (w[facei]*U[own[facei]] + (1 - w[facei])*U[nei[facei]]);
+            }
+            else
+            {
+                phi[facei] = Sf[facei] & U[o ? own[facei] : nei[facei]];
+            }
+        }
+        forAll(mesh.boundaryMesh(), patchi)
+        {
+            const polyPatch& pp = mesh.boundaryMesh()[patchi];
+            scalarField& pphi = phi.boundaryFieldRef()[patchi];
+            if (isA<wallPolyPatch>(pp))
+            {
+                pphi = 0;
+                continue;
+            }
+            // Open patches: outflow with the class's velocity where it
+            // crossed them, else the gas flux (the inflow at an inlet)
+            forAll(pp, i)
+            {
+                const label facei = pp.start() + i;
+                const label celli = own[facei];
+                if (crossed_[j][facei] > 0 && residence_[j][celli] > 0)
+                {
+                    pphi[i] = mesh.Sf().boundaryField()[patchi][i] & U[celli];
+                }
+            }
+        }
+        phi.write();
+
+        // Wall fields: nParticle-weighted means over the impacts of each
+        // wall face, 0 on faces without impacts
+        const label nB = mesh.nBoundaryFaces();
+        scalarField count(nB, Zero), volume(nB, Zero), speed(nB, Zero);
+        scalarField normal(nB, Zero), tangential(nB, Zero), angle(nB, Zero);
+        const scalar Vp = species_[j].particleVolume();
+        for (const impactRecord& r : impacts_[j])
+        {
+            const label b = r.face - mesh.nInternalFaces();
+            count[b] += r.nParticle;
+            volume[b] += r.nParticle*Vp;
+            speed[b] += r.nParticle*Foam::sqrt(sqr(r.Un) + sqr(r.Ut));
+            normal[b] += r.nParticle*r.Un;
+            tangential[b] += r.nParticle*r.Ut;
+            angle[b] += r.nParticle*radToDeg(Foam::atan2(r.Un, r.Ut));
+        }
+
+        auto writeWallField =
+            [&](const word& fieldName, const dimensionSet& dims,
+                const scalarField& sum, const bool perAreaTime)
+        {
+            volScalarField f
+            (
+                ioNew(fieldName + "." + name),
+                mesh,
+                dimensionedScalar(dims, Zero)
+            );
+            forAll(mesh.boundaryMesh(), patchi)
+            {
+                const polyPatch& pp = mesh.boundaryMesh()[patchi];
+                if (!isA<wallPolyPatch>(pp))
+                {
+                    continue;
+                }
+                scalarField& pf = f.boundaryFieldRef()[patchi];
+                const scalarField& magSf = mesh.magSf().boundaryField()[patchi];
+                forAll(pp, i)
+                {
+                    const label b = pp.start() + i - mesh.nInternalFaces();
+                    if (perAreaTime)
+                    {
+                        pf[i] = sum[b]/(magSf[i]*T);
+                    }
+                    else if (count[b] > 0)
+                    {
+                        pf[i] = sum[b]/count[b];
+                    }
+                }
+            }
+            f.write();
+        };
+        writeWallField("impactRate", inv(dimArea*dimTime), count, true);
+        writeWallField
+        (
+            "impactVolumeRate", dimVolume/dimArea/dimTime, volume, true
+        );
+        writeWallField("impactSpeed", dimVelocity, speed, false);
+        writeWallField("impactNormalSpeed", dimVelocity, normal, false);
+        writeWallField("impactTangentialSpeed", dimVelocity, tangential, false);
+        writeWallField("impactAngle", dimless, angle, false);
+    }
+}
+
+
+template<class CloudType>
+void Foam::ParticlePass<CloudType>::writeTables() const
+{
+    const fvMesh& mesh = this->owner().mesh();
+    const scalar T = span();
+    if (!(T > 0))
+    {
+        return;
+    }
+    const fileName dir(this->writeTimeDir());
+    mkDir(dir);
+
+    OFstream summary(dir/"summary.dat");
+    summary
+        << "# particlePass over " << T << " s from t = " << startTime_ << nl
+        << "# species  d[m]  residenceVolume[m3]  impactsPerSecond[1/s]"
+        << "  impactVolumeRate[m3/s]  meanImpactSpeed[m/s]"
+        << "  meanNormalSpeed[m/s]  meanTangentialSpeed[m/s]"
+        << "  meanImpactAngle[deg]  firstImpacts" << nl;
+
+    forAll(species_, j)
+    {
+        const granularSpecies& s = species_[j];
+        const scalar Vp = s.particleVolume();
+
+        OFstream impacts(dir/"impacts." + s.name);
+        impacts
+            << "# Wall impacts of species " << s.name << " (d " << s.d
+            << " m) over " << T << " s" << nl
+            << "# face: mesh face index; rate: particles per second this"
+            << " record stands for (nParticle/T)" << nl
+            << "# face  rate[1/s]  Un[m/s]  Ut[m/s]" << nl;
+        scalar n = 0, speed = 0, normal = 0, tangential = 0, angle = 0;
+        for (const impactRecord& r : impacts_[j])
+        {
+            impacts
+                << r.face << ' ' << r.nParticle/T << ' ' << r.Un << ' '
+                << r.Ut << nl;
+            n += r.nParticle;
+            speed += r.nParticle*Foam::sqrt(sqr(r.Un) + sqr(r.Ut));
+            normal += r.nParticle*r.Un;
+            tangential += r.nParticle*r.Ut;
+            angle += r.nParticle*radToDeg(Foam::atan2(r.Un, r.Ut));
+        }
+        const scalar nSafe = max(n, VSMALL);
+        summary
+            << s.name << ' ' << s.d << ' ' << sum(residence_[j])/T << ' '
+            << n/T << ' ' << n*Vp/T << ' ' << speed/nSafe << ' '
+            << normal/nSafe << ' ' << tangential/nSafe << ' '
+            << angle/nSafe << ' ' << firstImpacts_[j].size() << nl;
+
+        OFstream first(dir/"firstImpacts." + s.name);
+        first
+            << "# First wall impact of every parcel of species " << s.name
+            << " (origId: the parcel's number, in injection order)" << nl
+            << "# x[m]  y[m]  z[m]  Un[m/s]  Ut[m/s]  nParticle  origId" << nl;
+        forAll(firstImpacts_[j], i)
+        {
+            const vector& x = firstImpactPositions_[j][i];
+            const impactRecord& r = firstImpacts_[j][i];
+            first
+                << x.x() << ' ' << x.y() << ' ' << x.z() << ' ' << r.Un
+                << ' ' << r.Ut << ' ' << r.nParticle << ' '
+                << firstImpactIds_[j][i] << nl;
+        }
+
+        const scalar speedTotal = max(sum(speedHistogram_[j]), VSMALL);
+        OFstream speeds(dir/"impactSpeedDistribution." + s.name);
+        speeds
+            << "# Distribution (particle fraction per bin) of the impact speed,"
+            << " its normal and tangential parts, species " << s.name << nl
+            << "# low[m/s]  high[m/s]  speed  normal  tangential" << nl;
+        const scalar dv = maxSpeed_/speedBins_;
+        for (label b = 0; b < speedBins_; ++b)
+        {
+            speeds
+                << b*dv << ' ' << (b + 1)*dv << ' '
+                << speedHistogram_[j][b]/speedTotal << ' '
+                << normalHistogram_[j][b]/speedTotal << ' '
+                << tangentialHistogram_[j][b]/speedTotal << nl;
+        }
+
+        const scalar angleTotal = max(sum(angleHistogram_[j]), VSMALL);
+        OFstream angles(dir/"impactAngleDistribution." + s.name);
+        angles
+            << "# Distribution (particle fraction per bin) of the impact angle"
+            << " to the wall, species " << s.name << nl
+            << "# low[deg]  high[deg]  fraction" << nl;
+        const scalar da = 90.0/angleBins_;
+        for (label b = 0; b < angleBins_; ++b)
+        {
+            angles
+                << b*da << ' ' << (b + 1)*da << ' '
+                << angleHistogram_[j][b]/angleTotal << nl;
+        }
+    }
+
+    OFstream outflow(dir/"outflow.dat");
+    outflow
+        << "# Solids volume rate [m3/s] leaving through each non-wall patch,"
+        << " per species, over " << T << " s" << nl << "# patch";
+    forAll(species_, j)
+    {
+        outflow << ' ' << species_[j].name;
+    }
+    outflow << nl;
+    forAll(mesh.boundaryMesh(), patchi)
+    {
+        const polyPatch& pp = mesh.boundaryMesh()[patchi];
+        if (isA<wallPolyPatch>(pp) || polyPatch::constraintType(pp.type()))
+        {
+            continue;
+        }
+        outflow << pp.name();
+        forAll(species_, j)
+        {
+            scalar out = 0;
+            forAll(pp, i)
+            {
+                out += max(crossed_[j][pp.start() + i], scalar(0));
+            }
+            outflow << ' ' << out/T;
+        }
+        outflow << nl;
+    }
+}
+
+
+// * * * * * * * * * * * * * * * Protected Functions  * * * * * * * * * * * //
+
+template<class CloudType>
+void Foam::ParticlePass<CloudType>::write()
+{
+    writeFields();
+    writeTables();
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+template<class CloudType>
+Foam::ParticlePass<CloudType>::ParticlePass
+(
+    const dictionary& dict,
+    CloudType& owner,
+    const word& modelName
+)
+:
+    CloudFunctionObject<CloudType>(dict, owner, modelName, typeName),
+    species_(caseSpecies(owner.mesh())),
+    startTime_(this->coeffDict().getOrDefault("startTime", scalar(0))),
+    speedBins_(this->coeffDict().getOrDefault("speedBins", label(60))),
+    maxSpeed_(this->coeffDict().getOrDefault("maxSpeed", scalar(60))),
+    angleBins_(this->coeffDict().getOrDefault("angleBins", label(45)))
+{
+    if (Pstream::parRun())
+    {
+        FatalErrorInFunction
+            << "particlePass (" << this->coeffDict().name() << ") records"
+            << " face crossings in serial only: run the particle pass"
+            << " without -parallel (segregationDegradationFoam, which uses"
+            << " its results, runs decomposed)" << exit(FatalError);
+    }
+    if (speedBins_ < 1 || angleBins_ < 1 || !(maxSpeed_ > 0))
+    {
+        FatalIOErrorInFunction(this->coeffDict())
+            << "speedBins " << speedBins_ << ", angleBins " << angleBins_
+            << " and maxSpeed " << maxSpeed_ << " in "
+            << this->coeffDict().name() << " must be > 0" << exit(FatalIOError);
+    }
+
+    const fvMesh& mesh = owner.mesh();
+    const label nS = species_.size();
+    residence_.setSize(nS, scalarField(mesh.nCells(), Zero));
+    momentumResidence_.setSize(nS, vectorField(mesh.nCells(), Zero));
+    crossed_.setSize(nS, scalarField(mesh.nFaces(), Zero));
+    crossings_.setSize(nS, boolList(mesh.nFaces(), false));
+    impacts_.setSize(nS);
+    firstImpactPositions_.setSize(nS);
+    firstImpacts_.setSize(nS);
+    firstImpactIds_.setSize(nS);
+    speedHistogram_.setSize(nS, scalarField(speedBins_, Zero));
+    normalHistogram_.setSize(nS, scalarField(speedBins_, Zero));
+    tangentialHistogram_.setSize(nS, scalarField(speedBins_, Zero));
+    angleHistogram_.setSize(nS, scalarField(angleBins_, Zero));
+
+    Info<< "    particlePass: species";
+    for (const granularSpecies& s : species_)
+    {
+        Info<< ' ' << s.name << " (d " << s.d << " m)";
+    }
+    Info<< ", recording from t = " << startTime_ << " s" << endl;
+}
+
+
+template<class CloudType>
+Foam::ParticlePass<CloudType>::ParticlePass
+(
+    const ParticlePass<CloudType>& pp
+)
+:
+    CloudFunctionObject<CloudType>(pp),
+    species_(pp.species_),
+    startTime_(pp.startTime_),
+    speedBins_(pp.speedBins_),
+    maxSpeed_(pp.maxSpeed_),
+    angleBins_(pp.angleBins_),
+    residence_(pp.residence_),
+    momentumResidence_(pp.momentumResidence_),
+    crossed_(pp.crossed_),
+    crossings_(pp.crossings_),
+    impacts_(pp.impacts_),
+    firstImpactPositions_(pp.firstImpactPositions_),
+    firstImpacts_(pp.firstImpacts_),
+    firstImpactIds_(pp.firstImpactIds_),
+    hitWall_(pp.hitWall_),
+    speedHistogram_(pp.speedHistogram_),
+    normalHistogram_(pp.normalHistogram_),
+    tangentialHistogram_(pp.tangentialHistogram_),
+    angleHistogram_(pp.angleHistogram_)
+{}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+template<class CloudType>
+void Foam::ParticlePass<CloudType>::postMove
+(
+    parcelType& p,
+    const scalar dt,
+    const point&,
+    bool&
+)
+{
+    if (!recording() || !(dt > 0))
+    {
+        return;
+    }
+    // The sub-step ended on a face or inside the cell: either way it was
+    // spent in p.cell() (hitFace, which changes the cell, comes after)
+    const label j = speciesOf(p.d());
+    const scalar w = p.nParticle()*p.volume()*dt;
+    residence_[j][p.cell()] += w;
+    momentumResidence_[j][p.cell()] += w*p.U();
+}
+
+
+template<class CloudType>
+void Foam::ParticlePass<CloudType>::postFace
+(
+    const parcelType& p,
+    bool&
+)
+{
+    if (!recording())
+    {
+        return;
+    }
+    const fvMesh& mesh = this->owner().mesh();
+    const label facei = p.face();
+    scalar sign = 1;
+    if (mesh.isInternalFace(facei))
+    {
+        sign = (p.cell() == mesh.faceOwner()[facei]) ? 1 : -1;
+    }
+    else
+    {
+        const polyPatch& pp =
+            mesh.boundaryMesh()[mesh.boundaryMesh().whichPatch(facei)];
+        if (isA<wallPolyPatch>(pp))
+        {
+            // Not a crossing: the impact is recorded by postPatch
+            return;
+        }
+    }
+    const label j = speciesOf(p.d());
+    crossed_[j][facei] += sign*p.nParticle()*p.volume();
+    crossings_[j][facei] = true;
+}
+
+
+template<class CloudType>
+void Foam::ParticlePass<CloudType>::postPatch
+(
+    const parcelType& p,
+    const polyPatch& pp,
+    bool&
+)
+{
+    if (!recording() || !isA<wallPolyPatch>(pp))
+    {
+        return;
+    }
+
+    vector nw, Up;
+    this->owner().patchData(p, pp, nw, Up);
+    const vector U(p.U() - Up);
+    const scalar Un = U & nw;
+    if (!(Un > 0))
+    {
+        // Moving away from (or along) the wall: no impact
+        return;
+    }
+    const scalar Ut = mag(U - Un*nw);
+
+    const label j = speciesOf(p.d());
+    const impactRecord r{p.face(), p.nParticle(), Un, Ut};
+    impacts_[j].append(r);
+
+    if (hitWall_.insert(labelPair(p.origProc(), p.origId())))
+    {
+        firstImpacts_[j].append(r);
+        firstImpactPositions_[j].append(p.position());
+        firstImpactIds_[j].append(p.origId());
+    }
+
+    const scalar dv = maxSpeed_/speedBins_;
+    auto bin = [&](const scalar v)
+    {
+        return min(label(v/dv), speedBins_ - 1);
+    };
+    speedHistogram_[j][bin(mag(U))] += p.nParticle();
+    normalHistogram_[j][bin(Un)] += p.nParticle();
+    tangentialHistogram_[j][bin(Ut)] += p.nParticle();
+    const scalar angle = radToDeg(Foam::atan2(Un, Ut));
+    angleHistogram_[j][min(label(angle/(90.0/angleBins_)), angleBins_ - 1)] +=
+        p.nParticle();
+}
+
+
+// ************************************************************************* //
