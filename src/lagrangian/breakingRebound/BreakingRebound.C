@@ -44,6 +44,7 @@ Foam::BreakingRebound<CloudType>::BreakingRebound
     PatchInteractionModel<CloudType>(dict, cloud, typeName),
     e_(this->coeffDict().template get<scalar>("e")),
     mu_(this->coeffDict().template get<scalar>("mu")),
+    startTime_(this->coeffDict().getOrDefault("startTime", scalar(0))),
     species_(caseSpecies(cloud.mesh())),
     kernel_
     (
@@ -87,6 +88,7 @@ Foam::BreakingRebound<CloudType>::BreakingRebound
     PatchInteractionModel<CloudType>(pim),
     e_(pim.e_),
     mu_(pim.mu_),
+    startTime_(pim.startTime_),
     species_(pim.species_),
     kernel_(pim.kernel_),
     weights_(pim.weights_),
@@ -123,17 +125,29 @@ bool Foam::BreakingRebound<CloudType>::correct
     const scalar Un = U & nw;
     const vector Ut = U - Un*nw;
 
+    // The counters from startTime on (a window with a full pipe); the
+    // breakage itself at every time
+    const bool counting =
+        this->owner().mesh().time().value() > startTime_;
+
     if (Un > 0)
     {
         const label j = parcelSpecies(species_, p.d());
-        impacts_[j] += p.nParticle();
+        if (counting)
+        {
+            impacts_[j] += p.nParticle();
+        }
 
         const scalar P = kernel_.probability(species_[j].d, Un, mag(Ut));
         Random& rnd = this->owner().rndGen();
         if (P > 0 && rnd.template sample01<scalar>() < P)
         {
-            const scalar parcelVolume = p.nParticle()*p.volume();
-            events_[j] += p.nParticle();
+            const scalar parcelVolume =
+                counting ? p.nParticle()*p.volume() : 0;
+            if (counting)
+            {
+                events_[j] += p.nParticle();
+            }
 
             // The class the fragments go to, with the volume fractions of
             // the continuum (beta_jj: fragments that stay in the class)
@@ -190,8 +204,10 @@ template<class CloudType>
 void Foam::BreakingRebound<CloudType>::info(Ostream& os)
 {
     PatchInteractionModel<CloudType>::info(os);
-    os  << "    breakingRebound: per species impacts / breakage events /"
-        << " broken volume [m3]" << nl;
+    os  << "    breakingRebound from t = " << startTime_ << " s over "
+        << max(this->owner().mesh().time().value() - startTime_, scalar(0))
+        << " s: per species impacts / breakage events / broken volume [m3]"
+        << nl;
     forAll(species_, j)
     {
         os  << "      " << species_[j].name << ' '

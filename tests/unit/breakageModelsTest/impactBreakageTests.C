@@ -19,6 +19,7 @@ Description
 
 #include "breakageTestFixtures.H"
 #include "impactBreakage.H"
+#include "breakageModel.H"
 #include "mathematicalConstants.H"
 #include "unitConversion.H"
 
@@ -136,3 +137,30 @@ TEST(impactBreakage, badInputNamesTheEntry)
 
 
 // ************************************************************************* //
+
+
+TEST(wallImpactBreakage, badInputNamesTheEntry)
+{
+    // The kernel's entries are checked before any file is read
+    expectFoamError
+    (
+        []{ breakageModel::New(dictOf("model wallImpact; wallImpactCoeffs { fMat -0.9; xWmMin 0.12; impactEnergy normal; }"), mix()); },
+        {"fMat -0.9", ">= 0"}
+    );
+    expectFoamError
+    (
+        []{ breakageModel::New(dictOf("model wallImpact; wallImpactCoeffs { fMat 0.9; xWmMin 0.12; impactEnergy sideways; }"), mix()); },
+        {"impactEnergy sideways", "angleFunction", "normal", "total"}
+    );
+    expectFoamError
+    (
+        []{ breakageModel::New(dictOf("model wallImpact; wallImpactCoeffs { fMat 0.9; xWmMin 0.12; impactEnergy normal; impactEnergyy total; }"), mix()); },
+        {"impactEnergyy"}
+    );
+    // No particle pass: the missing impact list is named with the entry
+    expectFoamError
+    (
+        []{ breakageModel::New(dictOf("model wallImpact; wallImpactCoeffs { fMat 0.9; xWmMin 0.12; impactEnergy normal; impacts \"/nonexistent/pass\"; }"), mix()); },
+        {"/nonexistent/pass/impacts.", "impacts"}
+    );
+}
