@@ -79,3 +79,78 @@ ok = ok and abs(centreBend - 31.0) <= 0.5 and maxBend <= 44.4 + 0.5
 sys.exit(0 if ok else 1)
 PY
 }
+
+# The chain on the short bend, no gas solve (the pass in still air: parcels
+# fired at 20 m/s, gravity on), the classes carried with their own fluxes
+# and broken at the wall (impactEnergy total): solids in = out + held up +
+# dust to 1e-9 of the inflow (the 10 digits of outlet.dat), every class non-negative, the finer classes
+# and dust gained what the parent lost, 2 MPI ranks = serial
+test_pipe_bend_mass_balance()
+{
+    local dir="$workRoot/pipeBendMassBalance" tut="$projectDir/tutorials/pipeBend"
+    rm -rf "$dir"
+    mkdir -p "$dir/pass" "$dir/case"
+    cp -r "$tut/system" "$tut/constant" "$tut/0.orig" "$dir/case/"
+    mesh_short_bend "$dir/case" 3 || return 1
+    echo "impactEnergy total;" > "$dir/case/constant/bendParameters"
+    # The pass: the tutorial's stage with the ballistic test's still air
+    cp -r "$tut/particlePass/system" "$tut/particlePass/constant" "$dir/pass/"
+    cp -r "$dir/case/constant/polyMesh" "$dir/case/constant/granularProperties" \
+        "$dir/case/constant/bendParameters" "$dir/pass/constant/"
+    mkdir -p "$dir/pass/0"
+    cp "$projectDir/tests/solver/pipeBend/ballistic/0/U" "$dir/pass/0/U"
+    : > "$dir/pass/constant/injectionModels"
+    for c in d2mm:2e-3 d1mm:1e-3 d500um:5e-4 d250um:2.5e-4
+    do
+        cat >> "$dir/pass/constant/injectionModels" <<INJ
+${c%%:*} { type patchInjection; patch inlet; SOI 0; duration 1; parcelsPerSecond \$parcelsPerSecond;
+  U0 (\$Uin 0 0); flowRateProfile constant 1; massTotal 0; parcelBasisType fixed; nParticle 1;
+  sizeDistribution { type fixedValue; fixedValueDistribution { value ${c#*:}; } } }
+INJ
+    done
+    foamDictionary -entry endTime -set 0.03 "$dir/pass/system/controlDict" > /dev/null
+    foamDictionary -entry writeInterval -set 0.03 "$dir/pass/system/controlDict" > /dev/null
+    foamDictionary -entry recordFrom -set 0.01 "$dir/pass/constant/passParameters" > /dev/null
+    foamDictionary -entry parcelsPerSecond -set 20000 "$dir/pass/constant/passParameters" > /dev/null
+    icoUncoupledKinematicParcelFoam -case "$dir/pass" > "$dir/log.pass" 2>&1 || { tail -30 "$dir/log.pass"; return 1; }
+    # The solver's case
+    cp -r "$dir/case/0.orig" "$dir/case/0"
+    cp "$dir/pass/0.03"/alphaPass.* "$dir/pass/0.03"/UPass.* "$dir/pass/0.03"/phiPass.* "$dir/case/0/"
+    mkdir -p "$dir/case/constant/particlePass"
+    cp "$dir/pass/postProcessing/lagrangian/kinematicCloud/particlePass/0.03"/impacts.* "$dir/case/constant/particlePass/"
+    foamDictionary -entry endTime -set 0.04 "$dir/case/system/controlDict" > /dev/null
+    foamDictionary -entry writeInterval -set 0.02 "$dir/case/system/controlDict" > /dev/null
+    cp -r "$dir/case" "$dir/parallel"
+    segregationDegradationFoam -case "$dir/case" > "$dir/log.solver" 2>&1 || { tail -30 "$dir/log.solver"; return 1; }
+    printf 'FoamFile { version 2.0; format ascii; class dictionary; object decomposeParDict; }\nnumberOfSubdomains 2;\nmethod simple;\nsimpleCoeffs { n (2 1 1); delta 0.001; }\n' > "$dir/parallel/system/decomposeParDict"
+    decomposePar -case "$dir/parallel" > "$dir/log.decomposePar" 2>&1 || { tail -20 "$dir/log.decomposePar"; return 1; }
+    mpirun -np 2 segregationDegradationFoam -parallel -case "$dir/parallel" > "$dir/log.parallel" 2>&1 || { tail -30 "$dir/log.parallel"; return 1; }
+    python3 -m sdfoam.fieldStats "$dir/case" bounds --tol 1e-12 || return 1
+    python3 - "$dir" <<'PY'
+import re, sys
+d = sys.argv[1]
+def balance(log, base):
+    text = open(log).read()
+    initial = float(re.search(r"Initial solids: total volume (\S+)", text).group(1))
+    last = re.findall(r"^Solids: total volume (\S+)\s+dust volume (\S+)(.*)$", text, re.M)[-1]
+    total, dust = float(last[0]), float(last[1])
+    vols = dict(re.findall(r"n\.(\S+) volume (\S+)", last[2]))
+    def cum(patch):
+        rows = [l for l in open(base + patch + ".dat") if not l.startswith("#")]
+        hdr = [l for l in open(base + patch + ".dat") if l.startswith("# time")][0][1:].split()
+        row = dict(zip(hdr, map(float, rows[-1].split())))
+        return sum(v for k, v in row.items() if k.startswith("cumulativeMass.")) / 1590.0
+    inflow, outflow = -cum("inlet"), cum("outlet")
+    return initial, total, dust, vols, inflow, outflow
+i, t, dust, vols, qin, qout = balance(d + "/log.solver", d + "/case/postProcessing/outletComposition/0/")
+err = abs(i + qin - qout - t - dust) / qin
+fines = sum(float(v) for k, v in vols.items() if k != "d2mm")
+p = re.findall(r"^Solids: total volume (\S+)\s+dust volume (\S+)(.*)$", open(d + "/log.parallel").read(), re.M)[-1]
+parDiff = max(abs(float(p[0]) - t) / t, abs(float(p[1]) - dust) / max(dust, 1e-300))
+print("in %.6e out %.6e held %.6e dust %.6e: balance %.2e of the inflow; finer classes held %.3e (%.3e of the held solids); 2 ranks vs serial: %.2e"
+      % (qin, qout, t, dust, err, fines, fines / t, parDiff))
+# 1e-9: the cumulative masses are read from outlet.dat, written with 10
+# significant digits (measured 1.6e-10)
+sys.exit(0 if err < 1e-9 and fines > 0 and dust >= 0 and parDiff < 1e-8 else 1)
+PY
+}

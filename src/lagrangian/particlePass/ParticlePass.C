@@ -143,13 +143,14 @@ void Foam::ParticlePass<CloudType>::writeFields() const
                 pphi = 0;
                 continue;
             }
-            // Open patches: outflow with the class's velocity where it
-            // crossed them, else the gas flux (the inflow at an inlet)
+            // Open patches: the class's velocity in the cell beside the face
+            // where it went (at an inlet the injection velocity: parcels
+            // are injected inside the first cells and never cross the
+            // inlet face), else the gas flux
             forAll(pp, i)
             {
-                const label facei = pp.start() + i;
-                const label celli = own[facei];
-                if (crossed_[j][facei] > 0 && residence_[j][celli] > 0)
+                const label celli = own[pp.start() + i];
+                if (residence_[j][celli] > 0)
                 {
                     pphi[i] = mesh.Sf().boundaryField()[patchi][i] & U[celli];
                 }
