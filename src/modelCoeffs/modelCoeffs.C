@@ -9,6 +9,8 @@
 #include "modelCoeffs.H"
 #include "ITstream.H"
 
+#include <cmath>
+
 // * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
 
 namespace
@@ -157,6 +159,24 @@ const char* Foam::modelCoeffs::libraryHint(const word& modelType)
             "to system/controlDict\n";
     }
     return "";
+}
+
+
+void Foam::modelCoeffs::checkNonNegative
+(
+    const dictionary& dict,
+    const word& key,
+    const scalar value,
+    const char* what
+)
+{
+    if (!(value >= 0) || !std::isfinite(value))
+    {
+        FatalIOErrorInFunction(dict)
+            << what << " coefficient '" << key << " " << value
+            << "' in " << dict.name() << " must be finite and >= 0" << nl
+            << exit(FatalIOError);
+    }
 }
 
 

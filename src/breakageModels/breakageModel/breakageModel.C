@@ -35,13 +35,7 @@ void Foam::breakageModel::checkNonNegative
     const scalar value
 ) const
 {
-    if (!(value >= 0) || !std::isfinite(value))
-    {
-        FatalIOErrorInFunction(coeffs_)
-            << "Breakage coefficient '" << key << " " << value
-            << "' in " << coeffs_.name() << " must be finite and >= 0" << nl
-            << exit(FatalIOError);
-    }
+    modelCoeffs::checkNonNegative(coeffs_, key, value, "Breakage");
 }
 
 

@@ -29,27 +29,6 @@ const Foam::wordList Foam::impactBreakage::keys
 });
 
 
-namespace
-{
-//- FatalIOError unless value is finite and >= 0, naming the entry
-void checkNonNegative
-(
-    const Foam::dictionary& dict,
-    const Foam::word& key,
-    const Foam::scalar value
-)
-{
-    if (!(value >= 0) || !std::isfinite(value))
-    {
-        FatalIOErrorInFunction(dict)
-            << "Impact breakage coefficient '" << key << " " << value
-            << "' in " << dict.name() << " must be finite and >= 0" << Foam::nl
-            << Foam::exit(Foam::FatalIOError);
-    }
-}
-}
-
-
 Foam::impactBreakage::impactBreakage(const dictionary& dict)
 :
     fMat_
@@ -63,8 +42,8 @@ Foam::impactBreakage::impactBreakage(const dictionary& dict)
     energy_(impactEnergy::normal),
     sinCriticalAngle_(1)
 {
-    checkNonNegative(dict, "fMat", fMat_);
-    checkNonNegative(dict, "xWmMin", xWmMin_);
+    modelCoeffs::checkNonNegative(dict, "fMat", fMat_, "Impact breakage");
+    modelCoeffs::checkNonNegative(dict, "xWmMin", xWmMin_, "Impact breakage");
 
     // Required, no default: which energy counts decides the answer
     const word energyName(dict.get<word>("impactEnergy"));

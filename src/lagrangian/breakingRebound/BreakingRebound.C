@@ -11,6 +11,7 @@
 #include "caseFields.H"
 #include "parcelSpecies.H"
 #include "wallPolyPatch.H"
+#include "modelCoeffs.H"
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
@@ -28,7 +29,7 @@ Foam::dictionary Foam::BreakingRebound<CloudType>::wallImpactCoeffs
             << " model: 'model " << model << "' in " << breakageDict.name()
             << " must be wallImpact" << nl << exit(FatalIOError);
     }
-    return breakageDict.optionalSubDict("wallImpactCoeffs");
+    return modelCoeffs::coeffsDict(breakageDict, "wallImpact");
 }
 
 

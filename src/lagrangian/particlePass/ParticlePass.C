@@ -13,7 +13,6 @@
 #include "surfaceFields.H"
 #include "wallPolyPatch.H"
 #include "processorPolyPatch.H"
-#include "unitConversion.H"
 #include "OFstream.H"
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
@@ -169,10 +168,10 @@ void Foam::ParticlePass<CloudType>::writeFields() const
             const label b = r.face - mesh.nInternalFaces();
             count[b] += r.nParticle;
             volume[b] += r.nParticle*Vp;
-            speed[b] += r.nParticle*Foam::sqrt(sqr(r.Un) + sqr(r.Ut));
+            speed[b] += r.nParticle*r.speed();
             normal[b] += r.nParticle*r.Un;
             tangential[b] += r.nParticle*r.Ut;
-            angle[b] += r.nParticle*radToDeg(Foam::atan2(r.Un, r.Ut));
+            angle[b] += r.nParticle*r.angle();
         }
 
         auto writeWallField =
@@ -261,10 +260,10 @@ void Foam::ParticlePass<CloudType>::writeTables() const
                 << r.face << ' ' << r.nParticle/T << ' ' << r.Un << ' '
                 << r.Ut << nl;
             n += r.nParticle;
-            speed += r.nParticle*Foam::sqrt(sqr(r.Un) + sqr(r.Ut));
+            speed += r.nParticle*r.speed();
             normal += r.nParticle*r.Un;
             tangential += r.nParticle*r.Ut;
-            angle += r.nParticle*radToDeg(Foam::atan2(r.Un, r.Ut));
+            angle += r.nParticle*r.angle();
         }
         const scalar nSafe = max(n, VSMALL);
         summary
@@ -543,11 +542,10 @@ void Foam::ParticlePass<CloudType>::postPatch
     {
         return min(label(v/dv), speedBins_ - 1);
     };
-    speedHistogram_[j][bin(mag(U))] += p.nParticle();
+    speedHistogram_[j][bin(r.speed())] += p.nParticle();
     normalHistogram_[j][bin(Un)] += p.nParticle();
     tangentialHistogram_[j][bin(Ut)] += p.nParticle();
-    const scalar angle = radToDeg(Foam::atan2(Un, Ut));
-    angleHistogram_[j][min(label(angle/(90.0/angleBins_)), angleBins_ - 1)] +=
+    angleHistogram_[j][min(label(r.angle()/(90.0/angleBins_)), angleBins_ - 1)] +=
         p.nParticle();
 }
 
