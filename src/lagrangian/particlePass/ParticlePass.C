@@ -49,6 +49,8 @@ void Foam::ParticlePass<CloudType>::writeFields() const
     }
     const surfaceScalarField& phiGas =
         mesh.template lookupObject<surfaceScalarField>("phi");
+    const vectorField& Ugas =
+        mesh.template lookupObject<volVectorField>("U").primitiveField();
     const labelUList& own = mesh.owner();
     const labelUList& nei = mesh.neighbour();
     const scalarField& V = mesh.V().field();
@@ -70,17 +72,9 @@ void Foam::ParticlePass<CloudType>::writeFields() const
     {
         const word& name = species_[j].name;
 
-        volScalarField alpha
-        (
-            ioNew("alphaPass." + name),
-            mesh,
-            dimensionedScalar(dimless, Zero),
-            zeroGradientFvPatchScalarField::typeName
-        );
-        alpha.primitiveFieldRef() = residence_[j]/(V*T);
-        alpha.correctBoundaryConditions();
-        alpha.write();
-
+        // Mean velocity of the class: residence-weighted, so alphaPass
+        // UPass is the time-averaged solids volume flux density
+        const scalarField& residence = residence_[j];
         volVectorField U
         (
             ioNew("UPass." + name),
@@ -90,47 +84,82 @@ void Foam::ParticlePass<CloudType>::writeFields() const
         );
         forAll(U, celli)
         {
-            if (residence_[j][celli] > 0)
+            if (residence[celli] > 0)
             {
-                U[celli] = momentumResidence_[j][celli]/residence_[j][celli];
+                U[celli] = momentumResidence_[j][celli]/residence[celli];
             }
         }
         U.correctBoundaryConditions();
         U.write();
 
-        // The class's own volume flux: its mean velocity UPass (residence-
-        // weighted, so alphaPass UPass is the time-averaged solids flux)
-        // interpolated to the faces it crossed, from one side where only
-        // one cell saw it; 0 on faces it never crossed next to a cell it
-        // visited (the pass says nothing went there); the gas flux between
-        // cells it never visited (its fragments move with the gas where
-        // the class itself never went). Not the crossed volume over the
-        // upwind cell's alpha: that ratio explodes in cells a few
-        // particles only clipped
-        surfaceScalarField phi(ioNew("phiPass." + name), phiGas);
-        const vectorField& Sf = mesh.Sf().primitiveField();
-        const scalarField& w = mesh.weights().primitiveField();
+        // The crossed solids volume per second: the class's volume flux F
+        // through every face, outward positive on boundary faces
+        const scalarField F(crossed_[j]/T);
+        scalarField outflow(mesh.nCells(), Zero);
         forAll(nei, facei)
         {
-            const bool o = residence_[j][own[facei]] > 0;
-            const bool n = residence_[j][nei[facei]] > 0;
-            if (!o && !n)
+            outflow[F[facei] > 0 ? own[facei] : nei[facei]] += mag(F[facei]);
+        }
+        for (label facei = mesh.nInternalFaces(); facei < F.size(); ++facei)
+        {
+            outflow[own[facei]] += max(F[facei], scalar(0));
+        }
+
+        // The volume fraction the flux carries: the residence fraction,
+        // raised in cells the class only clipped (a particle crossing a
+        // corner spends almost no time in the cell, so crossed volume over
+        // residence would be an unbounded velocity): no cell's outflow
+        // velocity exceeds twice the larger of the class's and the gas's
+        // speed there (cell Courant number bounded by that speed's)
+        volScalarField alpha
+        (
+            ioNew("alphaPass." + name),
+            mesh,
+            dimensionedScalar(dimless, Zero),
+            zeroGradientFvPatchScalarField::typeName
+        );
+        label raised = 0, visited = 0;
+        forAll(alpha, celli)
+        {
+            visited += (residence[celli] > 0);
+            alpha[celli] = residence[celli]/(V[celli]*T);
+            if (outflow[celli] > 0)
             {
-                continue;
+                const scalar speedCap =
+                    2*max(mag(U[celli]), mag(Ugas[celli])) + SMALL;
+                const scalar minAlpha =
+                    outflow[celli]/(speedCap*Foam::cbrt(sqr(V[celli])));
+                if (alpha[celli] < minAlpha)
+                {
+                    alpha[celli] = minAlpha;
+                    ++raised;
+                }
             }
-            if (!crossings_[j][facei])
+        }
+        alpha.correctBoundaryConditions();
+        alpha.write();
+
+        // The class's own face flux: the crossed volume over the upwind
+        // cell's alphaPass, so that alphaPass advected with phiPass and
+        // upwind weights carries exactly the crossed volume (the continuum
+        // holds the pass's hold-up and impacts the pass's wall cells).
+        // Faces between cells the class never visited carry the gas flux
+        // (its fragments move with the gas where it never went); faces it
+        // never crossed beside a visited cell carry 0; walls 0
+        surfaceScalarField phi(ioNew("phiPass." + name), phiGas);
+        forAll(nei, facei)
+        {
+            const label up = F[facei] > 0 ? own[facei] : nei[facei];
+            if (F[facei] != 0)
+            {
+                phi[facei] = F[facei]/alpha[up];
+            }
+            else if
+            (
+                residence[own[facei]] > 0 || residence[nei[facei]] > 0
+            )
             {
                 phi[facei] = 0;
-            }
-            else if (o && n)
-            {
-                phi[facei] =
-                    Sf[facei]
-                  & (w[facei]*U[own[facei]] + (1 - w[facei])*U[nei[facei]]);
-            }
-            else
-            {
-                phi[facei] = Sf[facei] & U[o ? own[facei] : nei[facei]];
             }
         }
         forAll(mesh.boundaryMesh(), patchi)
@@ -142,20 +171,31 @@ void Foam::ParticlePass<CloudType>::writeFields() const
                 pphi = 0;
                 continue;
             }
-            // Open patches: the class's velocity in the cell beside the face
-            // where it went (at an inlet the injection velocity: parcels
-            // are injected inside the first cells and never cross the
-            // inlet face), else the gas flux
+            // Open patches: what left through the face; inflow (an inlet:
+            // parcels are injected inside the first cells and never cross
+            // the inlet face) at the class's velocity in the cell beside
+            // the face; the gas flux beside cells the class never visited
             forAll(pp, i)
             {
-                const label celli = own[pp.start() + i];
-                if (residence_[j][celli] > 0)
+                const label facei = pp.start() + i;
+                const label celli = own[facei];
+                const scalar inward =
+                    mesh.Sf().boundaryField()[patchi][i] & U[celli];
+                if (F[facei] > 0)
                 {
-                    pphi[i] = mesh.Sf().boundaryField()[patchi][i] & U[celli];
+                    pphi[i] = F[facei]/alpha[celli];
+                }
+                else if (residence[celli] > 0)
+                {
+                    pphi[i] = min(inward, scalar(0));
                 }
             }
         }
         phi.write();
+
+        Info<< "    particlePass: " << name << ": alphaPass raised in "
+            << raised << " clipped cells (of "
+            << visited << " visited)" << endl;
 
         // Wall fields: nParticle-weighted means over the impacts of each
         // wall face, 0 on faces without impacts
@@ -397,7 +437,6 @@ Foam::ParticlePass<CloudType>::ParticlePass
     residence_.setSize(nS, scalarField(mesh.nCells(), Zero));
     momentumResidence_.setSize(nS, vectorField(mesh.nCells(), Zero));
     crossed_.setSize(nS, scalarField(mesh.nFaces(), Zero));
-    crossings_.setSize(nS, boolList(mesh.nFaces(), false));
     impacts_.setSize(nS);
     firstImpactPositions_.setSize(nS);
     firstImpacts_.setSize(nS);
@@ -431,7 +470,6 @@ Foam::ParticlePass<CloudType>::ParticlePass
     residence_(pp.residence_),
     momentumResidence_(pp.momentumResidence_),
     crossed_(pp.crossed_),
-    crossings_(pp.crossings_),
     impacts_(pp.impacts_),
     firstImpactPositions_(pp.firstImpactPositions_),
     firstImpacts_(pp.firstImpacts_),
@@ -498,7 +536,6 @@ void Foam::ParticlePass<CloudType>::postFace
     }
     const label j = speciesOf(p.d());
     crossed_[j][facei] += sign*p.nParticle()*p.volume();
-    crossings_[j][facei] = true;
 }
 
 
