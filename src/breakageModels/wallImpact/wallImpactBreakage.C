@@ -90,7 +90,8 @@ Foam::breakageModels::wallImpact::wallImpact
         mixture
     ),
     kernel_(coeffs_),
-    S_(mixture.size())
+    S_(mixture.size()),
+    breakageProbability_(mixture.size())
 {
     const fvMesh& mesh = mixture.mesh();
     const fileName dir
@@ -174,6 +175,26 @@ Foam::breakageModels::wallImpact::wallImpact
         const scalar Vp = mixture.particleVolume(j);
         scalarField brokenRate(mesh.nCells(), Zero);
         label outside = 0;
+        breakageProbability_.set
+        (
+            j,
+            new volScalarField
+            (
+                IOobject
+                (
+                    "breakageProbability." + name,
+                    mesh.time().timeName(),
+                    mesh,
+                    IOobject::NO_READ,
+                    IOobject::AUTO_WRITE
+                ),
+                mesh,
+                dimensionedScalar(dimless, Zero)
+            )
+        );
+        volScalarField::Boundary& faceP =
+            breakageProbability_[j].boundaryFieldRef();
+        scalarField faceRate(mesh.nBoundaryFaces(), Zero);
         for (const record& r : records[j])
         {
             const label facei = local[r.face];
@@ -190,7 +211,25 @@ Foam::breakageModels::wallImpact::wallImpact
                     << nl << exit(FatalIOError);
             }
             const label celli = mesh.faceOwner()[facei];
-            brokenRate[celli] += r.rate*Vp*kernel_.probability(dj, r.Un, r.Ut);
+            const scalar P = kernel_.probability(dj, r.Un, r.Ut);
+            brokenRate[celli] += r.rate*Vp*P;
+            const label patchi = mesh.boundaryMesh().whichPatch(facei);
+            const label patchFacei =
+                facei - mesh.boundaryMesh()[patchi].start();
+            faceP[patchi][patchFacei] += r.rate*P;
+            faceRate[facei - mesh.nInternalFaces()] += r.rate;
+        }
+        forAll(faceP, patchi)
+        {
+            const label start = mesh.boundaryMesh()[patchi].start();
+            forAll(faceP[patchi], i)
+            {
+                const scalar rate = faceRate[start + i - mesh.nInternalFaces()];
+                if (rate > 0)
+                {
+                    faceP[patchi][i] /= rate;
+                }
+            }
         }
 
         S_[j].setSize(mesh.nCells(), Zero);
