@@ -235,8 +235,9 @@ sys.exit(0 if max(a) == 0 else 1)" || { echo "emptyClass: alphaPass.d500um is no
 # (residence-weighted over the visited cells without a wall face).
 # The solver may then move them with the gas flux (particlePassCoeffs
 # gasVelocity (d5um)): it runs, bounded and balanced; asking the same for
-# the 2 mm class (Stokes number about 100) is refused with a FatalIOError
-# naming gasVelocity and stokesLimit, and nothing is written
+# the 2 mm class (Stokes number about 10,000 with Stokes drag) is refused
+# with a FatalIOError naming gasVelocity and stokesLimit, as are a class
+# that is not a species and a missing pipeDiameter; nothing is written
 test_pipe_bend_tiny_particles()
 {
     local dir="$workRoot/pipeBendTiny" tut="$projectDir/tutorials/pipeBend" gasTime
@@ -307,4 +308,14 @@ PY
         || { tail -20 "$dir/log.refused"; return 1; }
     [ -z "$(foamListTimes -case "$dir/refused" 2>/dev/null)" ] || { echo "refused run wrote a time directory"; return 1; }
     grep -m1 "Stokes number" "$dir/log.refused"
+    # A class that is not a species, and a missing pipeDiameter
+    foamDictionary -entry bulkFlow/particlePassCoeffs -set "{ gasVelocity (d7um); gasViscosity 1.8e-5; pipeDiameter 0.05; }" \
+        "$dir/refused/constant/granularProperties" > /dev/null
+    segregationDegradationFoam -case "$dir/refused" > "$dir/log.unknown" 2>&1 && { echo "gasVelocity (d7um) accepted"; return 1; }
+    grep -q "gasVelocity names d7um, which is not a species" "$dir/log.unknown" || { tail -20 "$dir/log.unknown"; return 1; }
+    foamDictionary -entry bulkFlow/particlePassCoeffs -set "{ gasVelocity (d5um); gasViscosity 1.8e-5; }" \
+        "$dir/refused/constant/granularProperties" > /dev/null
+    segregationDegradationFoam -case "$dir/refused" > "$dir/log.missing" 2>&1 && { echo "missing pipeDiameter accepted"; return 1; }
+    grep -q "pipeDiameter" "$dir/log.missing" || { tail -20 "$dir/log.missing"; return 1; }
+    [ -z "$(foamListTimes -case "$dir/refused" 2>/dev/null)" ] || { echo "refused run wrote a time directory"; return 1; }
 }
