@@ -64,6 +64,12 @@ test_bad_input()
         breakageNegativeMaterial)
             set_breakage "$gp" "model vogelPeukert; vogelPeukertCoeffs { fMat -2; xWmMin 0.05; } daughterSizeDistribution { model uniformBinary; }"
             expect=("fMat -2" ">= 0" "vogelPeukertCoeffs") ;;
+        breakageWallImpactNegative)
+            set_breakage "$gp" "model wallImpact; wallImpactCoeffs { fMat 0.9; xWmMin -0.12; impactEnergy normal; } daughterSizeDistribution { model uniformBinary; }"
+            expect=("xWmMin -0.12" ">= 0" "wallImpactCoeffs") ;;
+        breakageWallImpactUnknownEnergy)
+            set_breakage "$gp" "model wallImpact; wallImpactCoeffs { fMat 0.9; xWmMin 0.12; impactEnergy kinetic; } daughterSizeDistribution { model uniformBinary; }"
+            expect=("kinetic" "impactEnergy" "total" "normal" "angleFunction") ;;
         breakageUnknownModel)
             set_breakage "$gp" "model fancy; daughterSizeDistribution { model uniformBinary; }"
             expect=("Unknown breakage model type fancy" "constant" "powerLaw" "vogelPeukert" "none") ;;
