@@ -148,8 +148,7 @@ INJ
 
 # bend_solve DIR: segregationDegradationFoam on DIR/case (serial), then its
 # fields bounded (no NaN, no negative class) and its solids balance:
-# in = out + held up + dust to 1e-9 of the inflow (the 10 digits of
-# outlet.dat). Prints the balance; FINES (exported) = the finer classes'
+# in = out + held up + dust to 1e-10 of the inflow. Prints the balance; FINES (exported) = the finer classes'
 # held volume over the held solids
 bend_solve()
 {
@@ -164,7 +163,7 @@ bend_solve()
 # The chain on the short bend, no gas solve (the pass in still air: parcels
 # fired at 20 m/s, gravity on), the classes carried with their own fluxes
 # and broken at the wall (impactEnergy total): solids in = out + held up +
-# dust to 1e-9 of the inflow, every class non-negative, the finer classes
+# dust to 1e-10 of the inflow, every class non-negative, the finer classes
 # gained what the parent lost, 2 MPI ranks = serial
 test_pipe_bend_mass_balance()
 {

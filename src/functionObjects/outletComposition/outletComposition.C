@@ -101,7 +101,8 @@ void Foam::functionObjects::outletComposition::createFiles()
         files_.set(pi, new OFstream(path));
 
         OFstream& os = files_[pi];
-        os.precision(10);
+        // 15 digits: balances over a run are checked to 1e-10 of the inflow
+        os.precision(15);
         os  << "# Flow through patch " << patchName
             << " (positive leaving the domain)" << nl
             << "# time[s] Q[m3/s] massFlow[kg/s]";

@@ -1,9 +1,8 @@
 """balance.py LOG OUTLETDIR: the solids balance of a pipeBend run of
 segregationDegradationFoam: inflow (outletComposition inlet.dat) = outflow
-(outlet.dat) + held up + dust (the last "Solids:" line of the log), to 1e-9
-of the inflow (of the solids present when nothing flows in): the
-cumulative masses are read from outlet.dat, written with 10 significant
-digits (measured 1.6e-10). Also the volume the finer classes hold. Exit
+(outlet.dat) + held up + dust (the last "Solids:" line of the log, 12
+digits), to 1e-10 of the inflow (of the solids present when nothing flows
+in). Also the volume the finer classes hold. Exit
 status 1 if the balance fails."""
 import re
 import sys
@@ -31,4 +30,4 @@ fines = sum(float(v) for k, v in volumes.items() if k != "d2mm")
 print("in %.6e out %.6e held %.6e dust %.6e: balance %.2e of the inflow;"
       " finer classes held %.3e (%.3e of the held solids)"
       % (inflow, outflow, held, dust, error, fines, fines / held if held > 0 else 0.0))
-sys.exit(0 if error < 1e-9 and dust >= 0 else 1)
+sys.exit(0 if error < 1e-10 and dust >= 0 else 1)
