@@ -448,6 +448,28 @@ void Foam::granularMixture::checkFinite(const word& where) const
             }
         }
     }
+
+    // More solids than space: a bulk flow that piles the species up (a
+    // particle pass whose particles gather where they come to rest, a
+    // kinematic field that converges) would go on filling without bound
+    const scalarField& total = nTotal_.primitiveField();
+    const label celli = findMax(total);
+    const scalar worst = returnReduce
+    (
+        total.size() ? total[celli] : scalar(0), maxOp<scalar>()
+    );
+    if (worst > 1)
+    {
+        FatalErrorInFunction
+            << "Solids volume fraction " << worst << " > 1 " << where
+            << ", time " << mesh_.time().timeName() << ": the bulk flow"
+            << " piles the species up beyond any packing (bulkFlow"
+            << " particlePass: the pass's particles gather where they come"
+            << " to rest; restitution, wall friction or a gas that cannot"
+            << " carry them)" << nl
+            << "    Stopping before this time is written." << nl
+            << exit(FatalError);
+    }
 }
 
 

@@ -85,6 +85,13 @@ Foam::boolList Foam::bulkFlowModels::particlePass::gasVelocityClasses
     }
     const scalar gasSpeed =
         gMax(mag(gasPhi_->primitiveField())/mesh.magSf().primitiveField());
+    if (!(gasSpeed > 0))
+    {
+        FatalIOErrorInFunction(coeffs_)
+            << "bulkFlow particlePass: gasVelocity " << gasClasses
+            << " but the gas flux " << gasIO.objectPath() << " is zero"
+            << " everywhere: nothing would carry them" << exit(FatalIOError);
+    }
 
     for (const word& name : gasClasses)
     {

@@ -128,8 +128,11 @@ bool Foam::BreakingRebound<CloudType>::correct
 
     // The counters from startTime on (a window with a full pipe); the
     // breakage itself at every time
+    // (half a step's margin, as particlePass: the step that ends at
+    // startTime plus round-off is not counted)
+    const Time& time = this->owner().mesh().time();
     const bool counting =
-        this->owner().mesh().time().value() > startTime_;
+        time.value() > startTime_ + 0.5*time.deltaTValue();
 
     if (Un > 0)
     {

@@ -27,7 +27,10 @@ Foam::label Foam::ParticlePass<CloudType>::speciesOf(const scalar d) const
 template<class CloudType>
 bool Foam::ParticlePass<CloudType>::recording() const
 {
-    return this->owner().mesh().time().value() > startTime_;
+    // Half a step's margin: the step that ends at startTime (plus
+    // round-off) is not recorded
+    const Time& time = this->owner().mesh().time();
+    return time.value() > startTime_ + 0.5*time.deltaTValue();
 }
 
 
@@ -51,8 +54,8 @@ void Foam::ParticlePass<CloudType>::writeFields() const
         mesh.template lookupObject<surfaceScalarField>("phi");
     const vectorField& Ugas =
         mesh.template lookupObject<volVectorField>("U").primitiveField();
-    const labelUList& own = mesh.owner();
-    const labelUList& nei = mesh.neighbour();
+    const labelUList& own = mesh.faceOwner();
+    const labelUList& nei = mesh.faceNeighbour();
     const scalarField& V = mesh.V().field();
 
     auto ioNew = [&mesh](const word& name)
@@ -95,22 +98,71 @@ void Foam::ParticlePass<CloudType>::writeFields() const
         // The crossed solids volume per second: the class's volume flux F
         // through every face, outward positive on boundary faces
         const scalarField F(crossed_[j]/T);
-        scalarField outflow(mesh.nCells(), Zero);
+        scalarField outflow(mesh.nCells(), Zero), inflow(mesh.nCells(), Zero);
         forAll(nei, facei)
         {
             outflow[F[facei] > 0 ? own[facei] : nei[facei]] += mag(F[facei]);
+            inflow[F[facei] > 0 ? nei[facei] : own[facei]] += mag(F[facei]);
         }
+        boolList feedCell(mesh.nCells(), false);
         for (label facei = mesh.nInternalFaces(); facei < F.size(); ++facei)
         {
             outflow[own[facei]] += max(F[facei], scalar(0));
+            inflow[own[facei]] += max(-F[facei], scalar(0));
+        }
+        forAll(mesh.boundaryMesh(), patchi)
+        {
+            const polyPatch& pp = mesh.boundaryMesh()[patchi];
+            if (!isA<wallPolyPatch>(pp))
+            {
+                forAll(pp, i)
+                {
+                    feedCell[own[pp.start() + i]] = true;
+                }
+            }
+        }
+
+        // Each cell passes on what it receives: its outflow is scaled by
+        // inflow/outflow, so the continuum's steady hold-up is alphaPass in
+        // every cell. A pass is never quite steady (particles inside when
+        // recording starts or ends; particles that slow down and gather
+        // on the pipe floor): unscaled, a cell that received more than it
+        // gave would fill up in the continuum without bound. Cells beside
+        // an open patch keep their crossings (their inflow is the feed, not
+        // a crossing); cells the class left without entering (present
+        // when recording started) too
+        scalarField passOn(mesh.nCells(), scalar(1));
+        label sinks = 0;
+        forAll(passOn, celli)
+        {
+            if (feedCell[celli] || !(inflow[celli] > 0))
+            {
+                continue;
+            }
+            if (outflow[celli] > 0)
+            {
+                passOn[celli] = inflow[celli]/outflow[celli];
+            }
+            else
+            {
+                ++sinks;
+            }
         }
 
         // The volume fraction the flux carries: the residence fraction,
         // raised in cells the class only clipped (a particle crossing a
         // corner spends almost no time in the cell, so crossed volume over
         // residence would be an unbounded velocity): no cell's outflow
-        // velocity exceeds twice the larger of the class's and the gas's
-        // speed there (cell Courant number bounded by that speed's)
+        // velocity exceeds twice the largest of the class's and the gas's
+        // speed there and the class's mean speed (cell Courant number
+        // bounded by that speed's; the mean speed bounds cells the class
+        // left without residence, in still gas)
+        scalar speedSum = 0;
+        forAll(residence, celli)
+        {
+            speedSum += mag(momentumResidence_[j][celli]);
+        }
+        const scalar meanSpeed = speedSum/max(sum(residence), VSMALL);
         volScalarField alpha
         (
             ioNew("alphaPass." + name),
@@ -126,9 +178,11 @@ void Foam::ParticlePass<CloudType>::writeFields() const
             if (outflow[celli] > 0)
             {
                 const scalar speedCap =
-                    2*max(mag(U[celli]), mag(Ugas[celli])) + SMALL;
+                    2*max(max(mag(U[celli]), mag(Ugas[celli])), meanSpeed)
+                  + SMALL;
                 const scalar minAlpha =
-                    outflow[celli]/(speedCap*Foam::cbrt(sqr(V[celli])));
+                    passOn[celli]*outflow[celli]
+                   /(speedCap*Foam::cbrt(sqr(V[celli])));
                 if (alpha[celli] < minAlpha)
                 {
                     alpha[celli] = minAlpha;
@@ -144,22 +198,31 @@ void Foam::ParticlePass<CloudType>::writeFields() const
         // upwind weights carries exactly the crossed volume (the continuum
         // holds the pass's hold-up and impacts the pass's wall cells).
         // Faces between cells the class never visited carry the gas flux
-        // (its fragments move with the gas where it never went); faces it
-        // never crossed beside a visited cell carry 0; walls 0
+        // (its fragments move with the gas where it never went), and so do
+        // faces from such a cell into a visited one where the gas flows
+        // that way (fragments drain into the class's own flow); nothing
+        // enters an unvisited region, so no pocket of it fills up. Faces
+        // the class never crossed between visited cells, or from a visited
+        // cell into an unvisited one, carry 0; walls 0
         surfaceScalarField phi(ioNew("phiPass." + name), phiGas);
         forAll(nei, facei)
         {
             const label up = F[facei] > 0 ? own[facei] : nei[facei];
+            const bool o = residence[own[facei]] > 0;
+            const bool n = residence[nei[facei]] > 0;
             if (F[facei] != 0)
             {
-                phi[facei] = F[facei]/alpha[up];
+                phi[facei] = F[facei]*passOn[up]/alpha[up];
             }
-            else if
-            (
-                residence[own[facei]] > 0 || residence[nei[facei]] > 0
-            )
+            else if (o && n)
             {
                 phi[facei] = 0;
+            }
+            else if (o || n)
+            {
+                // Gas from the unvisited side (owner to neighbour positive)
+                const scalar g = phiGas[facei];
+                phi[facei] = ((g > 0) == n) ? g : 0;
             }
         }
         forAll(mesh.boundaryMesh(), patchi)
@@ -174,28 +237,34 @@ void Foam::ParticlePass<CloudType>::writeFields() const
             // Open patches: what left through the face; inflow (an inlet:
             // parcels are injected inside the first cells and never cross
             // the inlet face) at the class's velocity in the cell beside
-            // the face; the gas flux beside cells the class never visited
+            // the face; beside cells the class never visited, only what
+            // the gas carries out (the feed enters where the class went)
             forAll(pp, i)
             {
                 const label facei = pp.start() + i;
                 const label celli = own[facei];
-                const scalar inward =
+                const scalar outward =
                     mesh.Sf().boundaryField()[patchi][i] & U[celli];
                 if (F[facei] > 0)
                 {
-                    pphi[i] = F[facei]/alpha[celli];
+                    pphi[i] = F[facei]*passOn[celli]/alpha[celli];
                 }
                 else if (residence[celli] > 0)
                 {
-                    pphi[i] = min(inward, scalar(0));
+                    pphi[i] = min(outward, scalar(0));
+                }
+                else
+                {
+                    pphi[i] = max(pphi[i], scalar(0));
                 }
             }
         }
         phi.write();
 
         Info<< "    particlePass: " << name << ": alphaPass raised in "
-            << raised << " clipped cells (of "
-            << visited << " visited)" << endl;
+            << raised << " clipped cells (of " << visited << " visited); "
+            << sinks << " cells received the class and never gave it on"
+            << endl;
 
         // Wall fields: nParticle-weighted means over the impacts of each
         // wall face, 0 on faces without impacts
