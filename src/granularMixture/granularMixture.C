@@ -458,7 +458,9 @@ void Foam::granularMixture::checkFinite(const word& where) const
     (
         total.size() ? total[celli] : scalar(0), maxOp<scalar>()
     );
-    if (worst > 1)
+    // (1 + 1e-6: cases that carry fractions of a full bed, n summing to
+    // 1, reach it to round-off)
+    if (worst > 1 + 1e-6)
     {
         FatalErrorInFunction
             << "Solids volume fraction " << worst << " > 1 " << where
