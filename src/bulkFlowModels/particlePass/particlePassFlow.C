@@ -190,34 +190,9 @@ Foam::bulkFlowModels::particlePass::particlePass
         dimensionedVector(dimVelocity, Zero)
     );
 
-    forAll(mixture.names(), i)
+    // The species flux, registered and written as phi.<species>
+    auto setSpeciesPhi = [&](const label i, const surfaceScalarField& source)
     {
-        const word& name = mixture.names()[i];
-        if (byGas[i])
-        {
-            speciesPhi_.set
-            (
-                i,
-                new surfaceScalarField
-                (
-                    IOobject
-                    (
-                        "phi." + name,
-                        mesh.time().timeName(),
-                        mesh,
-                        IOobject::NO_READ,
-                        IOobject::AUTO_WRITE
-                    ),
-                    gasPhi_()
-                )
-            );
-            continue;
-        }
-        const volScalarField alpha(passHeader("alphaPass." + name), mesh);
-        const volVectorField Ui(passHeader("UPass." + name), mesh);
-        alphaSum += alpha;
-        alphaU += alpha*Ui;
-
         speciesPhi_.set
         (
             i,
@@ -225,14 +200,33 @@ Foam::bulkFlowModels::particlePass::particlePass
             (
                 IOobject
                 (
-                    "phi." + name,
+                    "phi." + mixture.names()[i],
                     mesh.time().timeName(),
                     mesh,
                     IOobject::NO_READ,
                     IOobject::AUTO_WRITE
                 ),
-                surfaceScalarField(passHeader("phiPass." + name), mesh)
+                source
             )
+        );
+    };
+
+    forAll(mixture.names(), i)
+    {
+        const word& name = mixture.names()[i];
+        if (byGas[i])
+        {
+            setSpeciesPhi(i, gasPhi_());
+            continue;
+        }
+        const volScalarField alpha(passHeader("alphaPass." + name), mesh);
+        const volVectorField Ui(passHeader("UPass." + name), mesh);
+        alphaSum += alpha;
+        alphaU += alpha*Ui;
+
+        setSpeciesPhi
+        (
+            i, surfaceScalarField(passHeader("phiPass." + name), mesh)
         );
 
         // Nothing crosses a wall
