@@ -33,6 +33,136 @@ Foam::dictionary Foam::BreakingRebound<CloudType>::wallImpactCoeffs
 }
 
 
+template<class CloudType>
+bool Foam::BreakingRebound<CloudType>::readExpected(const dictionary& coeffs)
+{
+    const word mode(coeffs.getOrDefault<word>("fragments", "sampled"));
+    if (mode != "sampled" && mode != "expected")
+    {
+        FatalIOErrorInFunction(coeffs)
+            << "'fragments " << mode << "' in " << coeffs.name()
+            << ": valid choices are sampled (a broken parcel becomes one"
+            << " class, drawn: the reference) and expected (every impact"
+            << " splits the parcel into its expected shares: the continuum's"
+            << " particle pass)" << nl << exit(FatalIOError);
+    }
+    return mode == "expected";
+}
+
+
+template<class CloudType>
+bool Foam::BreakingRebound<CloudType>::sampleFragments
+(
+    typename CloudType::parcelType& p,
+    const label j,
+    const bool counting
+)
+{
+    const scalar parcelVolume = p.nParticle()*p.volume();
+    const label celli = p.cell();
+    if (counting)
+    {
+        events_[j] += p.nParticle();
+    }
+
+    // The class the fragments go to, with the volume fractions of the
+    // continuum (beta_jj: fragments that stay in the class)
+    const breakageWeights& w = weights_[j];
+    const scalar r = this->owner().rndGen().template sample01<scalar>();
+    scalar cumulative = 0;
+    label target = -1;
+    forAll(w.volume, i)
+    {
+        cumulative += w.volume[i];
+        if (r < cumulative)
+        {
+            target = i;
+            break;
+        }
+    }
+
+    if (target != j && counting)
+    {
+        brokenVolume_[j] += parcelVolume;
+        lostVolume_[j][celli] += parcelVolume;
+    }
+    if (target < 0)
+    {
+        // Finer than the finest class: dust (or round-off at the top of
+        // the cumulative sum with finestClass)
+        if (dustSink_)
+        {
+            if (counting)
+            {
+                dustVolume_ += parcelVolume;
+            }
+            return false;
+        }
+        target = findMax(w.volume);
+    }
+    if (target != j)
+    {
+        const scalar di = species_[target].d;
+        p.nParticle() *= pow3(p.d()/di);
+        p.d() = di;
+        if (counting)
+        {
+            bornVolume_[target][celli] += parcelVolume;
+        }
+    }
+    return true;
+}
+
+
+template<class CloudType>
+void Foam::BreakingRebound<CloudType>::splitFragments
+(
+    typename CloudType::parcelType& p,
+    const label j,
+    const scalar P,
+    const bool counting,
+    DynamicList<Tuple2<label, scalar>>& fragments
+)
+{
+    const scalar parcelVolume = p.nParticle()*p.volume();
+    const label celli = p.cell();
+
+    // The volume shares of the fragments; without dust, round-off of the
+    // fractions goes to the largest share (as sampled does)
+    scalarList share(weights_[j].volume);
+    const scalar rest = 1 - sum(share);
+    if (!dustSink_)
+    {
+        share[findMax(share)] += rest;
+    }
+
+    const scalar lost = P*(1 - share[j])*parcelVolume;
+    if (counting)
+    {
+        events_[j] += P*p.nParticle();
+        brokenVolume_[j] += lost;
+        lostVolume_[j][celli] += lost;
+        if (dustSink_)
+        {
+            dustVolume_ += P*max(rest, scalar(0))*parcelVolume;
+        }
+    }
+    forAll(share, i)
+    {
+        if (i != j && share[i] > 0)
+        {
+            const scalar volume = P*share[i]*parcelVolume;
+            fragments.append(Tuple2<label, scalar>(i, volume));
+            if (counting)
+            {
+                bornVolume_[i][celli] += volume;
+            }
+        }
+    }
+    p.nParticle() *= 1 - P*(1 - share[j]);
+}
+
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 template<class CloudType>
@@ -52,6 +182,9 @@ Foam::BreakingRebound<CloudType>::BreakingRebound
         wallImpactCoeffs(caseGranularProperties(cloud.mesh()).subDict("breakage"))
     ),
     dustSink_(false),
+    expected_(readExpected(this->coeffDict())),
+    bornVolume_(species_.size(), scalarField(cloud.mesh().nCells(), Zero)),
+    lostVolume_(species_.size(), scalarField(cloud.mesh().nCells(), Zero)),
     impacts_(species_.size(), Zero),
     events_(species_.size(), Zero),
     brokenVolume_(species_.size(), Zero),
@@ -94,6 +227,9 @@ Foam::BreakingRebound<CloudType>::BreakingRebound
     kernel_(pim.kernel_),
     weights_(pim.weights_),
     dustSink_(pim.dustSink_),
+    expected_(pim.expected_),
+    bornVolume_(pim.bornVolume_),
+    lostVolume_(pim.lostVolume_),
     impacts_(pim.impacts_),
     events_(pim.events_),
     brokenVolume_(pim.brokenVolume_),
@@ -134,6 +270,8 @@ bool Foam::BreakingRebound<CloudType>::correct
     const bool counting =
         time.value() > startTime_ + 0.5*time.deltaTValue();
 
+    // Expected: (species, volume) of the fragment parcels to add
+    DynamicList<Tuple2<label, scalar>> fragments;
     if (Un > 0)
     {
         const label j = parcelSpecies(species_, p.d());
@@ -143,62 +281,41 @@ bool Foam::BreakingRebound<CloudType>::correct
         }
 
         const scalar P = kernel_.probability(species_[j].d, Un, mag(Ut));
-        Random& rnd = this->owner().rndGen();
-        if (P > 0 && rnd.template sample01<scalar>() < P)
+        if (P > 0 && expected_)
         {
-            const scalar parcelVolume =
-                counting ? p.nParticle()*p.volume() : 0;
-            if (counting)
-            {
-                events_[j] += p.nParticle();
-            }
-
-            // The class the fragments go to, with the volume fractions of
-            // the continuum (beta_jj: fragments that stay in the class)
-            const breakageWeights& w = weights_[j];
-            const scalar r = rnd.template sample01<scalar>();
-            scalar cumulative = 0;
-            label target = -1;
-            forAll(w.volume, i)
-            {
-                cumulative += w.volume[i];
-                if (r < cumulative)
-                {
-                    target = i;
-                    break;
-                }
-            }
-
-            if (target != j)
-            {
-                brokenVolume_[j] += parcelVolume;
-            }
-            if (target < 0)
-            {
-                // Finer than the finest class: dust (or round-off at the
-                // top of the cumulative sum with finestClass)
-                if (dustSink_)
-                {
-                    dustVolume_ += parcelVolume;
-                    keepParticle = false;
-                    p.active(false);
-                    U = Zero;
-                    return true;
-                }
-                target = findMax(w.volume);
-            }
-            if (target != j)
-            {
-                const scalar di = species_[target].d;
-                p.nParticle() *= pow3(p.d()/di);
-                p.d() = di;
-            }
+            splitFragments(p, j, P, counting, fragments);
+        }
+        else if
+        (
+            P > 0
+         && this->owner().rndGen().template sample01<scalar>() < P
+         && !sampleFragments(p, j, counting)
+        )
+        {
+            // Turned to dust: the parcel leaves the cloud
+            keepParticle = false;
+            p.active(false);
+            U = Zero;
+            return true;
         }
 
         U -= (1 + e_)*Un*nw;
     }
     U -= mu_*Ut;
     U += Up;
+
+    // The fragment parcels: copies of the rebounding parcel (same place,
+    // cell, step fraction and velocity) with their class's diameter; the
+    // cloud's move loop tracks them for the rest of this step
+    for (const Tuple2<label, scalar>& f : fragments)
+    {
+        const granularSpecies& s = species_[f.first()];
+        auto* fragment = new typename CloudType::parcelType(p);
+        fragment->d() = s.d;
+        fragment->nParticle() = f.second()/s.particleVolume();
+        fragment->origId() = fragment->getNewParticleID();
+        this->owner().addParticle(fragment);
+    }
 
     return true;
 }
@@ -208,19 +325,25 @@ template<class CloudType>
 void Foam::BreakingRebound<CloudType>::info(Ostream& os)
 {
     PatchInteractionModel<CloudType>::info(os);
-    os  << "    breakingRebound from t = " << startTime_ << " s over "
+    // 12 digits: the volumes balance to round-off (born + dust = broken)
+    const label precision = os.precision(12);
+    os  << "    breakingRebound (fragments "
+        << (expected_ ? "expected" : "sampled") << ") from t = "
+        << startTime_ << " s over "
         << max(this->owner().mesh().time().value() - startTime_, scalar(0))
         << " s: per species impacts / breakage events / broken volume [m3]"
-        << nl;
+        << " / fragment volume born [m3]" << nl;
     forAll(species_, j)
     {
         os  << "      " << species_[j].name << ' '
             << returnReduce(impacts_[j], sumOp<scalar>()) << ' '
             << returnReduce(events_[j], sumOp<scalar>()) << ' '
-            << returnReduce(brokenVolume_[j], sumOp<scalar>()) << nl;
+            << returnReduce(brokenVolume_[j], sumOp<scalar>()) << ' '
+            << gSum(bornVolume_[j]) << nl;
     }
     os  << "      dust volume [m3] "
         << returnReduce(dustVolume_, sumOp<scalar>()) << nl;
+    os.precision(precision);
 }
 
 

@@ -9,6 +9,7 @@
 #include "ParticlePass.H"
 #include "caseFields.H"
 #include "parcelSpecies.H"
+#include "BreakingRebound.H"
 #include "volFields.H"
 #include "surfaceFields.H"
 #include "wallPolyPatch.H"
@@ -71,6 +72,14 @@ void Foam::ParticlePass<CloudType>::writeFields() const
         );
     };
 
+    // Fragments born and volume broken per cell, when the walls break
+    // parcels (breakingRebound)
+    const auto* breaking =
+        dynamic_cast<const BreakingRebound<CloudType>*>
+        (
+            &this->owner().patchInteraction()
+        );
+
     forAll(species_, j)
     {
         const word& name = species_[j].name;
@@ -97,19 +106,8 @@ void Foam::ParticlePass<CloudType>::writeFields() const
 
         // The crossed solids volume per second: the class's volume flux F
         // through every face, outward positive on boundary faces
-        const scalarField F(crossed_[j]/T);
-        scalarField outflow(mesh.nCells(), Zero), inflow(mesh.nCells(), Zero);
-        forAll(nei, facei)
-        {
-            outflow[F[facei] > 0 ? own[facei] : nei[facei]] += mag(F[facei]);
-            inflow[F[facei] > 0 ? nei[facei] : own[facei]] += mag(F[facei]);
-        }
+        scalarField F(crossed_[j]/T);
         boolList feedCell(mesh.nCells(), false);
-        for (label facei = mesh.nInternalFaces(); facei < F.size(); ++facei)
-        {
-            outflow[own[facei]] += max(F[facei], scalar(0));
-            inflow[own[facei]] += max(-F[facei], scalar(0));
-        }
         forAll(mesh.boundaryMesh(), patchi)
         {
             const polyPatch& pp = mesh.boundaryMesh()[patchi];
@@ -122,15 +120,95 @@ void Foam::ParticlePass<CloudType>::writeFields() const
             }
         }
 
+        // What each cell receives and gives per second. With
+        // breakingRebound walls, fragments born in a cell add to what it
+        // receives and the volume broken out of the class takes from it
+        // (the continuum's own sources do the same there)
+        scalarField outflow(mesh.nCells()), inflow(mesh.nCells());
+        auto balance = [&]()
+        {
+            outflow = Zero;
+            inflow = Zero;
+            forAll(nei, facei)
+            {
+                outflow[F[facei] > 0 ? own[facei] : nei[facei]] += mag(F[facei]);
+                inflow[F[facei] > 0 ? nei[facei] : own[facei]] += mag(F[facei]);
+            }
+            for (label facei = mesh.nInternalFaces(); facei < F.size(); ++facei)
+            {
+                outflow[own[facei]] += max(F[facei], scalar(0));
+                inflow[own[facei]] += max(-F[facei], scalar(0));
+            }
+            if (breaking)
+            {
+                inflow += breaking->bornVolume()[j]/T;
+                inflow = max(inflow - breaking->lostVolume()[j]/T, scalar(0));
+            }
+        };
+        balance();
+
+        // Cells the class enters and never leaves: its particles came to
+        // rest there (on the pipe floor, where the gas at the wall is too
+        // slow to lift them; the pass has no particle contact). In the
+        // continuum such a cell would fill without bound: it passes on what
+        // it receives with the gas instead, through the faces the gas
+        // leaves it by and the class never crossed, shared as the gas
+        // flux; repeated while that makes a new such cell downstream
+        label drained = 0;
+        for (label sweep = 0; sweep < 1000; ++sweep)
+        {
+            label drainedNow = 0;
+            forAll(inflow, celli)
+            {
+                if (feedCell[celli] || !(inflow[celli] > 0) || outflow[celli] > 0)
+                {
+                    continue;
+                }
+                const labelList& faces = mesh.cells()[celli];
+                scalar gasOut = 0;
+                for (const label facei : faces)
+                {
+                    if (mesh.isInternalFace(facei) && F[facei] == 0)
+                    {
+                        const scalar out =
+                            own[facei] == celli ? phiGas[facei] : -phiGas[facei];
+                        gasOut += max(out, scalar(0));
+                    }
+                }
+                if (!(gasOut > 0))
+                {
+                    continue;
+                }
+                for (const label facei : faces)
+                {
+                    if (mesh.isInternalFace(facei) && F[facei] == 0)
+                    {
+                        const scalar sign = own[facei] == celli ? 1 : -1;
+                        const scalar out = sign*phiGas[facei];
+                        if (out > 0)
+                        {
+                            F[facei] = sign*inflow[celli]*out/gasOut;
+                        }
+                    }
+                }
+                ++drainedNow;
+            }
+            if (!drainedNow)
+            {
+                break;
+            }
+            drained += drainedNow;
+            balance();
+        }
+
         // Each cell passes on what it receives: its outflow is scaled by
         // inflow/outflow, so the continuum's steady hold-up is alphaPass in
         // every cell. A pass is never quite steady (particles inside when
-        // recording starts or ends; particles that slow down and gather
-        // on the pipe floor): unscaled, a cell that received more than it
-        // gave would fill up in the continuum without bound. Cells beside
-        // an open patch keep their crossings (their inflow is the feed, not
-        // a crossing); cells the class left without entering (present
-        // when recording started) too
+        // recording starts or ends): unscaled, a cell that received more
+        // than it gave would fill up in the continuum without bound. Cells
+        // beside an open patch keep their crossings (their inflow is the
+        // feed, not a crossing); cells the class left without entering
+        // (present when recording started) too
         scalarField passOn(mesh.nCells(), scalar(1));
         label sinks = 0;
         forAll(passOn, celli)
@@ -263,7 +341,8 @@ void Foam::ParticlePass<CloudType>::writeFields() const
 
         Info<< "    particlePass: " << name << ": alphaPass raised in "
             << raised << " clipped cells (of " << visited << " visited); "
-            << sinks << " cells received the class and never gave it on"
+            << drained << " cells where it came to rest pass it on with the"
+            << " gas; " << sinks << " cells received it and never gave it on"
             << endl;
 
         // Wall fields: nParticle-weighted means over the impacts of each
