@@ -341,8 +341,9 @@ void Foam::ParticlePass<CloudType>::writeFields() const
 
         Info<< "    particlePass: " << name << ": alphaPass raised in "
             << raised << " clipped cells (of " << visited << " visited); "
-            << drained << " cells where it came to rest pass it on with the"
-            << " gas; " << sinks << " cells received it and never gave it on"
+            << drained << " cells pass it on with the gas (where it came to"
+            << " rest, and downstream); " << sinks
+            << " cells received it and never gave it on"
             << endl;
 
         // Wall fields: nParticle-weighted means over the impacts of each
