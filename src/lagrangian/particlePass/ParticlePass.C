@@ -428,7 +428,8 @@ void Foam::ParticlePass<CloudType>::writeTables() const
         << "# species  d[m]  residenceVolume[m3]  impactsPerSecond[1/s]"
         << "  impactVolumeRate[m3/s]  meanImpactSpeed[m/s]"
         << "  meanNormalSpeed[m/s]  meanTangentialSpeed[m/s]"
-        << "  meanImpactAngle[deg]  firstImpacts" << nl;
+        << "  meanImpactAngle[deg]  firstImpacts"
+        << "  grazingContactsPerSecond[1/s]" << nl;
 
     forAll(species_, j)
     {
@@ -459,7 +460,22 @@ void Foam::ParticlePass<CloudType>::writeTables() const
             << s.name << ' ' << s.d << ' ' << sum(residence_[j])/T << ' '
             << n/T << ' ' << n*Vp/T << ' ' << speed/nSafe << ' '
             << normal/nSafe << ' ' << tangential/nSafe << ' '
-            << angle/nSafe << ' ' << firstImpacts_[j].size() << nl;
+            << angle/nSafe << ' ' << firstImpacts_[j].size();
+        scalar grazing = 0;
+        OFstream contacts(dir/"grazingContacts." + s.name);
+        contacts
+            << "# Wall contacts of species " << s.name << " that are not"
+            << " impacts (moving along or away from the wall) over " << T
+            << " s" << nl
+            << "# face  rate[1/s]  Un[m/s] (<= 0)  Ut[m/s]" << nl;
+        for (const impactRecord& r : grazing_[j])
+        {
+            contacts
+                << r.face << ' ' << r.nParticle/T << ' ' << r.Un << ' '
+                << r.Ut << nl;
+            grazing += r.nParticle;
+        }
+        summary << ' ' << grazing/T << nl;
 
         OFstream first(dir/"firstImpacts." + s.name);
         first
@@ -587,6 +603,7 @@ Foam::ParticlePass<CloudType>::ParticlePass
     momentumResidence_.setSize(nS, vectorField(mesh.nCells(), Zero));
     crossed_.setSize(nS, scalarField(mesh.nFaces(), Zero));
     impacts_.setSize(nS);
+    grazing_.setSize(nS);
     firstImpactPositions_.setSize(nS);
     firstImpacts_.setSize(nS);
     firstImpactIds_.setSize(nS);
@@ -620,6 +637,7 @@ Foam::ParticlePass<CloudType>::ParticlePass
     momentumResidence_(pp.momentumResidence_),
     crossed_(pp.crossed_),
     impacts_(pp.impacts_),
+    grazing_(pp.grazing_),
     firstImpactPositions_(pp.firstImpactPositions_),
     firstImpacts_(pp.firstImpacts_),
     firstImpactIds_(pp.firstImpactIds_),
@@ -705,12 +723,16 @@ void Foam::ParticlePass<CloudType>::postPatch
     this->owner().patchData(p, pp, nw, Up);
     const vector U(p.U() - Up);
     const scalar Un = U & nw;
+    const scalar Ut = mag(U - Un*nw);
     if (!(Un > 0))
     {
         // Moving away from (or along) the wall: no impact
+        grazing_[speciesOf(p.d())].append
+        (
+            impactRecord{p.face(), p.nParticle(), Un, Ut}
+        );
         return;
     }
-    const scalar Ut = mag(U - Un*nw);
 
     const label j = speciesOf(p.d());
     const impactRecord r{p.face(), p.nParticle(), Un, Ut};
