@@ -256,6 +256,8 @@ PY
 # shares of the classes, so the finer classes are born at the wall.
 #   - the pass keeps volume: the fragments born plus dust equal the volume
 #     broken out of the classes, to 1e-10 (the log's counters, 12 digits)
+#   - `fragments expectation` (neither choice): FatalIOError naming the
+#     entry and the valid choices, no time written
 #   - the pass is steady: the fragments leaving equal those born less
 #     those broken, to 5 % (outflow.dat against the counters)
 #   - the continuum on this pass (bend_solve: bounded, balanced to 1e-10)
@@ -284,6 +286,19 @@ error = abs(born + dust - broken) / broken
 print("pass: broken %.6e m3, fragments born %.6e m3, dust %.3e m3: %.2e" % (broken, born, dust, error))
 sys.exit(0 if broken > 0 and error < 1e-10 else 1)
 PY
+    # A fragments entry that is neither sampled nor expected: FatalIOError
+    # naming the entry and the valid choices, before any step
+    mkdir -p "$dir/badFragments"
+    cp -r "$dir/pass/0" "$dir/pass/constant" "$dir/pass/system" "$dir/badFragments/"
+    foamDictionary -entry fragments -set expectation "$dir/badFragments/constant/passParameters" > /dev/null
+    if icoUncoupledKinematicParcelFoam -case "$dir/badFragments" > "$dir/log.badFragments" 2>&1
+    then
+        echo "fragments expectation: accepted"; return 1
+    fi
+    grep -q "'fragments expectation' in .*valid choices are sampled .* and expected" "$dir/log.badFragments" \
+        || { tail -20 "$dir/log.badFragments"; echo "fragments expectation: no clear message"; return 1; }
+    [ -z "$(foamListTimes -case "$dir/badFragments" 2>/dev/null)" ] || { echo "fragments expectation: a time was written"; return 1; }
+    grep -m1 "'fragments expectation'" "$dir/log.badFragments"
     foamDictionary -entry endTime -set 0.06 "$dir/case/system/controlDict" > /dev/null
     bend_solve "$dir" || return 1
     python3 - "$dir" <<'PY' || return 1
