@@ -10,12 +10,7 @@ mesh_short_bend()
     local dir="$1" RD="$2"
     mkdir -p "$dir/constant/triSurface"
     cp "$projectDir/tutorials/pipeBend/system/"{blockMeshDict,snappyHexMeshDict,surfaceFeatureExtractDict,meshParameters} "$dir/system/"
-    (cd "$dir" && python3 "$projectDir/tutorials/pipeBend/writeBendSTL" -RD "$RD" -upstream 1 -downstream 2 > log.writeBendSTL) || return 1
-    blockMesh -case "$dir" > "$dir/log.blockMesh" 2>&1 || return 1
-    surfaceFeatureExtract -case "$dir" > "$dir/log.surfaceFeatureExtract" 2>&1 || return 1
-    snappyHexMesh -case "$dir" -overwrite > "$dir/log.snappyHexMesh" 2>&1 || { tail -20 "$dir/log.snappyHexMesh"; return 1; }
-    checkMesh -case "$dir" > "$dir/log.checkMesh" 2>&1 || { tail -20 "$dir/log.checkMesh"; return 1; }
-    grep -q "Mesh OK" "$dir/log.checkMesh" || { tail -20 "$dir/log.checkMesh"; return 1; }
+    (cd "$dir" && "$projectDir/tutorials/pipeBend/meshBend" -RD "$RD" -upstream 1 -downstream 2) || return 1
 }
 
 # Ballistic limit: no gas, no gravity, drag negligible; 1800 parcels fired
