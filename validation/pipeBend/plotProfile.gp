@@ -8,5 +8,5 @@ set key top right
 set grid
 plot "results/outerWallProfile.d2mm.dat" using 1:2 with steps lw 2 title "d2mm, patchPostProcessing (hit points)", \
      "" using 1:3 with steps lw 2 dt 2 title "d2mm, particlePass (face centres)", \
-     "results/outerWallProfile.d250um.dat" using 1:2 with steps lw 2 title "d250um, patchPostProcessing", \
-     "" using 1:3 with steps lw 2 dt 2 title "d250um, particlePass"
+     "results/outerWallProfile.d1mm.dat" using 1:2 with steps lw 2 title "d1mm (fragments), patchPostProcessing", \
+     "" using 1:3 with steps lw 2 dt 2 title "d1mm (fragments), particlePass"
