@@ -8,7 +8,6 @@
 
 #include "BreakingRebound.H"
 #include "breakageSource.H"
-#include "caseFields.H"
 #include "parcelSpecies.H"
 #include "wallPolyPatch.H"
 #include "modelCoeffs.H"
@@ -172,15 +171,25 @@ Foam::BreakingRebound<CloudType>::BreakingRebound
     CloudType& cloud
 )
 :
+    // The case's mixture (which needs 0/n.<species>), used at construction
+    BreakingRebound(dict, cloud, granularMixture(cloud.mesh()))
+{}
+
+
+template<class CloudType>
+Foam::BreakingRebound<CloudType>::BreakingRebound
+(
+    const dictionary& dict,
+    CloudType& cloud,
+    const granularMixture& mixture
+)
+:
     PatchInteractionModel<CloudType>(dict, cloud, typeName),
     e_(this->coeffDict().template get<scalar>("e")),
     mu_(this->coeffDict().template get<scalar>("mu")),
     startTime_(this->coeffDict().getOrDefault("startTime", scalar(0))),
-    species_(caseSpecies(cloud.mesh())),
-    kernel_
-    (
-        wallImpactCoeffs(caseGranularProperties(cloud.mesh()).subDict("breakage"))
-    ),
+    species_(granularMixture::readSpecies(mixture)),
+    kernel_(wallImpactCoeffs(mixture.subDict("breakage"))),
     dustSink_(false),
     expected_(readExpected(this->coeffDict())),
     bornVolume_(species_.size(), scalarField(cloud.mesh().nCells(), Zero)),
@@ -201,9 +210,7 @@ Foam::BreakingRebound<CloudType>::BreakingRebound
         }
     }
 
-    // The fragment fractions of the continuum: from a mixture of the case's
-    // species (which needs 0/n.<species>), used once
-    const granularMixture mixture(cloud.mesh());
+    // The fragment fractions of the continuum
     weights_ = breakageSource::fragmentWeights
     (
         mixture,
