@@ -80,6 +80,11 @@ bool Foam::BreakingRebound<CloudType>::sampleFragments
         }
     }
 
+    if (target < 0 && !dustSink_)
+    {
+        // Round-off at the top of the cumulative sum with finestClass
+        target = findMax(w.volume);
+    }
     if (target != j && counting)
     {
         brokenVolume_[j] += parcelVolume;
@@ -87,17 +92,12 @@ bool Foam::BreakingRebound<CloudType>::sampleFragments
     }
     if (target < 0)
     {
-        // Finer than the finest class: dust (or round-off at the top of
-        // the cumulative sum with finestClass)
-        if (dustSink_)
+        // Finer than the finest class: dust
+        if (counting)
         {
-            if (counting)
-            {
-                dustVolume_ += parcelVolume;
-            }
-            return false;
+            dustVolume_ += parcelVolume;
         }
-        target = findMax(w.volume);
+        return false;
     }
     if (target != j)
     {
@@ -279,6 +279,7 @@ bool Foam::BreakingRebound<CloudType>::correct
 
     // Expected: (species, volume) of the fragment parcels to add
     DynamicList<Tuple2<label, scalar>> fragments;
+    bool brokenWhole = false;
     if (Un > 0)
     {
         const label j = parcelSpecies(species_, p.d());
@@ -291,6 +292,9 @@ bool Foam::BreakingRebound<CloudType>::correct
         if (P > 0 && expected_)
         {
             splitFragments(p, j, P, counting, fragments);
+            // P = 1 (to double precision) and nothing stays in the class:
+            // the parcel is all fragments and leaves the cloud below
+            brokenWhole = !(p.nParticle() > 0);
         }
         else if
         (
@@ -321,7 +325,13 @@ bool Foam::BreakingRebound<CloudType>::correct
         fragment->d() = s.d;
         fragment->nParticle() = f.second()/s.particleVolume();
         fragment->origId() = fragment->getNewParticleID();
+        fragment->origProc() = Pstream::myProcNo();
         this->owner().addParticle(fragment);
+    }
+    if (brokenWhole)
+    {
+        keepParticle = false;
+        p.active(false);
     }
 
     return true;

@@ -79,6 +79,16 @@ void Foam::ParticlePass<CloudType>::writeFields() const
         (
             &this->owner().patchInteraction()
         );
+    if (breaking && mag(breaking->startTime() - startTime_) > SMALL)
+    {
+        FatalErrorInFunction
+            << "particlePass startTime " << startTime_ << " and"
+            << " breakingRebound startTime " << breaking->startTime()
+            << " differ: the fragments born and the volume broken would be"
+            << " counted over another window than the crossings. Set both"
+            << " to the same time (tutorials/pipeBend: recordFrom)"
+            << exit(FatalError);
+    }
 
     forAll(species_, j)
     {
