@@ -9,6 +9,7 @@
 #include "BreakingRebound.H"
 #include "breakageSource.H"
 #include "parcelSpecies.H"
+#include "countingWindow.H"
 #include "wallPolyPatch.H"
 #include "modelCoeffs.H"
 
@@ -87,7 +88,6 @@ bool Foam::BreakingRebound<CloudType>::sampleFragments
     }
     if (target != j && counting)
     {
-        brokenVolume_[j] += parcelVolume;
         lostVolume_[j][celli] += parcelVolume;
     }
     if (target < 0)
@@ -139,7 +139,6 @@ void Foam::BreakingRebound<CloudType>::splitFragments
     if (counting)
     {
         events_[j] += P*p.nParticle();
-        brokenVolume_[j] += lost;
         lostVolume_[j][celli] += lost;
         if (dustSink_)
         {
@@ -196,7 +195,6 @@ Foam::BreakingRebound<CloudType>::BreakingRebound
     lostVolume_(species_.size(), scalarField(cloud.mesh().nCells(), Zero)),
     impacts_(species_.size(), Zero),
     events_(species_.size(), Zero),
-    brokenVolume_(species_.size(), Zero),
     dustVolume_(0)
 {
     for (const auto& bound : {std::make_pair("e", e_), std::make_pair("mu", mu_)})
@@ -239,7 +237,6 @@ Foam::BreakingRebound<CloudType>::BreakingRebound
     lostVolume_(pim.lostVolume_),
     impacts_(pim.impacts_),
     events_(pim.events_),
-    brokenVolume_(pim.brokenVolume_),
     dustVolume_(pim.dustVolume_)
 {}
 
@@ -269,13 +266,9 @@ bool Foam::BreakingRebound<CloudType>::correct
     const scalar Un = U & nw;
     const vector Ut = U - Un*nw;
 
-    // The counters from startTime on (a window with a full pipe); the
-    // breakage itself at every time
-    // (half a step's margin, as particlePass: the step that ends at
-    // startTime plus round-off is not counted)
-    const Time& time = this->owner().mesh().time();
-    const bool counting =
-        time.value() > startTime_ + 0.5*time.deltaTValue();
+    // The counters from startTime on (a window with a full pipe, the
+    // same steps as particlePass); the breakage itself at every time
+    const bool counting = countingFrom(this->owner().mesh().time(), startTime_);
 
     // Expected: (species, volume) of the fragment parcels to add
     DynamicList<Tuple2<label, scalar>> fragments;
@@ -355,7 +348,7 @@ void Foam::BreakingRebound<CloudType>::info(Ostream& os)
         os  << "      " << species_[j].name << ' '
             << returnReduce(impacts_[j], sumOp<scalar>()) << ' '
             << returnReduce(events_[j], sumOp<scalar>()) << ' '
-            << returnReduce(brokenVolume_[j], sumOp<scalar>()) << ' '
+            << gSum(lostVolume_[j]) << ' '
             << gSum(bornVolume_[j]) << nl;
     }
     os  << "      dust volume [m3] "

@@ -9,6 +9,7 @@
 #include "ParticlePass.H"
 #include "caseFields.H"
 #include "parcelSpecies.H"
+#include "countingWindow.H"
 #include "BreakingRebound.H"
 #include "volFields.H"
 #include "surfaceFields.H"
@@ -28,10 +29,7 @@ Foam::label Foam::ParticlePass<CloudType>::speciesOf(const scalar d) const
 template<class CloudType>
 bool Foam::ParticlePass<CloudType>::recording() const
 {
-    // Half a step's margin: the step that ends at startTime (plus
-    // round-off) is not recorded
-    const Time& time = this->owner().mesh().time();
-    return time.value() > startTime_ + 0.5*time.deltaTValue();
+    return countingFrom(this->owner().mesh().time(), startTime_);
 }
 
 
@@ -90,6 +88,20 @@ void Foam::ParticlePass<CloudType>::writeFields() const
             << exit(FatalError);
     }
 
+    // Cells beside an open (non-wall) patch: their inflow is the feed
+    boolList feedCell(mesh.nCells(), false);
+    forAll(mesh.boundaryMesh(), patchi)
+    {
+        const polyPatch& pp = mesh.boundaryMesh()[patchi];
+        if (!isA<wallPolyPatch>(pp))
+        {
+            forAll(pp, i)
+            {
+                feedCell[own[pp.start() + i]] = true;
+            }
+        }
+    }
+
     forAll(species_, j)
     {
         const word& name = species_[j].name;
@@ -117,18 +129,6 @@ void Foam::ParticlePass<CloudType>::writeFields() const
         // The crossed solids volume per second: the class's volume flux F
         // through every face, outward positive on boundary faces
         scalarField F(crossed_[j]/T);
-        boolList feedCell(mesh.nCells(), false);
-        forAll(mesh.boundaryMesh(), patchi)
-        {
-            const polyPatch& pp = mesh.boundaryMesh()[patchi];
-            if (!isA<wallPolyPatch>(pp))
-            {
-                forAll(pp, i)
-                {
-                    feedCell[own[pp.start() + i]] = true;
-                }
-            }
-        }
 
         // What each cell receives and gives per second. With
         // breakingRebound walls, fragments born in a cell add to what it
@@ -734,18 +734,14 @@ void Foam::ParticlePass<CloudType>::postPatch
     const vector U(p.U() - Up);
     const scalar Un = U & nw;
     const scalar Ut = mag(U - Un*nw);
+    const label j = speciesOf(p.d());
+    const impactRecord r{p.face(), p.nParticle(), Un, Ut};
     if (!(Un > 0))
     {
         // Moving away from (or along) the wall: no impact
-        grazing_[speciesOf(p.d())].append
-        (
-            impactRecord{p.face(), p.nParticle(), Un, Ut}
-        );
+        grazing_[j].append(r);
         return;
     }
-
-    const label j = speciesOf(p.d());
-    const impactRecord r{p.face(), p.nParticle(), Un, Ut};
     impacts_[j].append(r);
 
     if (hitWall_.insert(labelPair(p.origProc(), p.origId())))
