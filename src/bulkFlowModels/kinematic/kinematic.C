@@ -20,6 +20,7 @@
 #include "wallFvPatch.H"
 #include "mathematicalConstants.H"
 #include "modelCoeffs.H"
+#include "volFields.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -64,15 +65,104 @@ Foam::dictionary solverControls
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
-void Foam::bulkFlowModels::kinematic::readDischargeRate()
+void Foam::bulkFlowModels::kinematic::readGeometry()
 {
     const fvMesh& mesh = mixture_.mesh();
+    const vector gHat(normalised(mixture_.gravity()));
 
-    scalar meshOutletArea = 0;
+    // The outlets must face down: a gravity along the wrong axis (e.g. a
+    // case's constant/g copied to a mesh with another vertical) leaves
+    // nothing to march the kinematic equation along
+    vector outletNormal(Zero);
     for (const label patchi : outletPatches_)
     {
-        meshOutletArea += gSum(mesh.magSf().boundaryField()[patchi]);
+        outletNormal += sum(mesh.Sf().boundaryField()[patchi]);
     }
+    reduce(outletNormal, sumOp<vector>());
+    outletNormal /= max(mag(outletNormal), VSMALL);
+    if (!((outletNormal & gHat) > 0.5))
+    {
+        FatalIOErrorInFunction(coeffs_)
+            << "Gravity " << mixture_.gravity() << " (constant/g) does not"
+            << " point out of the outlet patches " << outletPatches_
+            << " (their mean outward normal is "
+            << outletNormal << "): the kinematic flow runs"
+            << " down along g to the outlets. Check constant/g and"
+            << " 'outletPatches'" << nl << exit(FatalIOError);
+    }
+
+    // The empty space the discharge leaves comes in through an open patch
+    // that is not an outlet (the silo's top)
+    label nInlets = 0;
+    for (const label patchi : openPatches(mesh))
+    {
+        if (!outletPatches_.found(patchi))
+        {
+            ++nInlets;
+        }
+    }
+    if (!nInlets)
+    {
+        FatalIOErrorInFunction(coeffs_)
+            << "The mesh's open patches (type patch) are only the outlets "
+            << outletPatches_ << ": the space the discharge leaves is"
+            << " filled through an open patch above the material (e.g. the"
+            << " silo's top, type patch); patches: "
+            << mesh.boundaryMesh().names() << nl << exit(FatalIOError);
+    }
+
+    geometry_.reset(new siloGeometry(mesh, outletPatches_, gHat));
+
+    // A declared geometry must be the mesh's; a 3-D slab may be declared
+    // planar
+    if (coeffs_.found("geometry"))
+    {
+        const word declared(coeffs_.get<word>("geometry"));
+        if (!siloGeometry::kindNames.found(declared))
+        {
+            FatalIOErrorInFunction(coeffs_)
+                << "Unknown geometry '" << declared << "'; valid: "
+                << siloGeometry::kindNames << nl << exit(FatalIOError);
+        }
+        const siloGeometry::kind k = siloGeometry::kindNames[declared];
+        if
+        (
+            k == siloGeometry::kind::planar
+         && geometry_->geometry() == siloGeometry::kind::threeD
+        )
+        {
+            geometry_->declarePlanar();
+        }
+        else if (k != geometry_->geometry())
+        {
+            FatalIOErrorInFunction(coeffs_)
+                << "'geometry " << declared << "' does not match the mesh,"
+                << " which is "
+                << siloGeometry::kindNames[geometry_->geometry()] << " ("
+                << geometry_->kindReason().c_str() << "). Only a 3-D slab"
+                << " may be declared planar" << nl << exit(FatalIOError);
+        }
+    }
+
+    const siloGeometry& geo = geometry_();
+    Info<< "    silo geometry " << siloGeometry::kindNames[geo.geometry()]
+        << " (" << geo.kindReason().c_str() << "); orifice "
+        << (geo.throat() ? "at the throat, height " : "at the outlet patches, height ")
+        << geo.orificeHeight() << " m: "
+        << (geo.geometry() == siloGeometry::kind::planar ? "slot width b = " : "D0 = ")
+        << geo.orificeSize() << " m";
+    if (geo.geometry() == siloGeometry::kind::planar)
+    {
+        Info<< ", slot length L = " << geo.slotLength() << " m";
+    }
+    Info<< ", area on the mesh " << geo.orificeArea() << " m2" << nl;
+}
+
+
+void Foam::bulkFlowModels::kinematic::readDischargeRate()
+{
+    const siloGeometry& geo = geometry_();
+    const bool planar = (geo.geometry() == siloGeometry::kind::planar);
 
     const word rateType(coeffs_.get<word>("dischargeRate"));
 
@@ -96,17 +186,18 @@ void Foam::bulkFlowModels::kinematic::readDischargeRate()
         }
     }
 
+    scalar fullOutletArea = geo.fullOrificeArea();
+
     if (rateType == "given")
     {
         Q_ = modelCoeffs::get(coeffs_, "Q", dimVolume/dimTime).value();
-        // Optional, default the outlet patches' area: the mesh holds the
-        // full geometry
-        fullOutletArea_ = modelCoeffs::getOrDefault
+        // Optional, default the full geometry's orifice
+        fullOutletArea = modelCoeffs::getOrDefault
         (
             coeffs_,
             "fullOutletArea",
             dimArea,
-            meshOutletArea
+            fullOutletArea
         ).value();
     }
     else if (rateType == "beverloo")
@@ -117,10 +208,10 @@ void Foam::bulkFlowModels::kinematic::readDischargeRate()
             bev,
             {"C", "k", "D0", "hopperHalfAngle", "fullOutletArea"}
         );
-        // Optional, defaults Beverloo's C 0.58 and k 1.5 (dimensionless)
-        const scalar C = bev.getOrDefault<scalar>("C", 0.58);
+        // Optional, defaults Beverloo's C 0.58 (circular orifice) or 1.03
+        // (slot, Nedderman 1992) and k 1.5 (dimensionless)
+        const scalar C = bev.getOrDefault<scalar>("C", planar ? 1.03 : 0.58);
         const scalar k = bev.getOrDefault<scalar>("k", 1.5);
-        const scalar D0 = modelCoeffs::get(bev, "D0", dimLength).value();
         if (!(C > 0) || !(k >= 0))
         {
             FatalIOErrorInFunction(bev)
@@ -128,7 +219,28 @@ void Foam::bulkFlowModels::kinematic::readDischargeRate()
                 << "' >= 0" << nl << exit(FatalIOError);
         }
 
+        // The orifice comes from the mesh; a D0 given must be it
+        const scalar D0 = geo.orificeSize();
+        if (bev.found("D0"))
+        {
+            const scalar D0given =
+                modelCoeffs::get(bev, "D0", dimLength).value();
+            if (!(mag(D0given - D0) <= 0.02*D0))
+            {
+                FatalIOErrorInFunction(bev)
+                    << "'D0 " << D0given << "' does not match the mesh's"
+                    << " orifice, " << (planar ? "a slot " : "")
+                    << D0 << " m wide ("
+                    << (geo.throat() ? "the throat at height " : "the outlet patches at height ")
+                    << geo.orificeHeight() << " m, "
+                    << siloGeometry::kindNames[geo.geometry()]
+                    << " geometry): remove D0 or correct it (2 % tolerance)"
+                    << nl << exit(FatalIOError);
+            }
+        }
+
         // Mean diameter of the initial mixture, weighted by solids volume
+        const fvMesh& mesh = mixture_.mesh();
         const volScalarField dMean(mixture_.dMean());
         const scalar solids = gSum(mixture_.nTotal().primitiveField()*mesh.V());
         const scalar d =
@@ -141,16 +253,32 @@ void Foam::bulkFlowModels::kinematic::readDischargeRate()
         {
             FatalIOErrorInFunction(bev)
                 << "Beverloo: D0 - k d = " << D0 << " - " << k << "*" << d
-                << " <= 0: the outlet (D0) is too small for the particles"
-                << nl << exit(FatalIOError);
+                << " <= 0: the mesh's orifice is too small for the particles"
+                << " (no flow)" << nl << exit(FatalIOError);
         }
 
-        Q_ = C*sqrt(mag(mixture_.gravity()))*pow(D0 - k*d, 2.5);
+        const scalar sqrtG = sqrt(mag(mixture_.gravity()));
+        if (planar)
+        {
+            Q_ = C*sqrtG*geo.slotLength()*pow(D0 - k*d, 1.5);
+        }
+        else
+        {
+            Q_ = C*sqrtG*pow(D0 - k*d, 2.5);
+        }
 
         // Optional, no default: without it the silo has a flat bottom and
         // the hopper factor (tan theta)^-0.35 is left out
         if (bev.found("hopperHalfAngle"))
         {
+            if (planar)
+            {
+                FatalIOErrorInFunction(bev)
+                    << "'hopperHalfAngle': the factor (tan theta)^-0.35 is"
+                    << " for conical hoppers; for a planar (wedge-shaped)"
+                    << " hopper give a C of its own instead" << nl
+                    << exit(FatalIOError);
+            }
             const scalar thetaDeg = bev.get<scalar>("hopperHalfAngle");
             if (!(thetaDeg > 0 && thetaDeg < 90))
             {
@@ -161,14 +289,13 @@ void Foam::bulkFlowModels::kinematic::readDischargeRate()
             }
             Q_ *= pow(tan(degToRad(thetaDeg)), -0.35);
         }
-        // Optional, default the area of a circular outlet pi D0^2/4 (the
-        // full geometry of an axisymmetric silo)
-        fullOutletArea_ = modelCoeffs::getOrDefault
+        // Optional, default the full geometry's orifice
+        fullOutletArea = modelCoeffs::getOrDefault
         (
             bev,
             "fullOutletArea",
             dimArea,
-            constant::mathematical::pi*sqr(D0)/4
+            fullOutletArea
         ).value();
         Info<< "    Beverloo discharge rate Q = " << Q_
             << " m3/s (bulk volume, full outlet), mean d = " << d << nl;
@@ -180,21 +307,21 @@ void Foam::bulkFlowModels::kinematic::readDischargeRate()
             << "'; valid: (beverloo given)" << nl << exit(FatalIOError);
     }
 
-    if (!(Q_ > 0) || !(fullOutletArea_ > 0) || !(meshOutletArea > 0))
+    if (!(Q_ > 0) || !(fullOutletArea > 0) || !(geo.orificeArea() > 0))
     {
         FatalIOErrorInFunction(coeffs_)
             << "Discharge rate Q " << Q_ << ", fullOutletArea "
-            << fullOutletArea_ << " and the outlet patches' area "
-            << meshOutletArea << " must all be > 0" << nl
+            << fullOutletArea << " and the mesh's orifice area "
+            << geo.orificeArea() << " must all be > 0" << nl
             << exit(FatalIOError);
     }
 
     // The share of the geometry the mesh holds (e.g. a wedge)
-    Q_ *= meshOutletArea/fullOutletArea_;
+    Qmesh_ = Q_*geo.orificeArea()/fullOutletArea;
 }
 
 
-void Foam::bulkFlowModels::kinematic::solveVelocity()
+void Foam::bulkFlowModels::kinematic::solveNeddermanTuzun()
 {
     const fvMesh& mesh = mixture_.mesh();
 
@@ -273,15 +400,82 @@ void Foam::bulkFlowModels::kinematic::solveVelocity()
             upwindScheme->fvmDiv(phiUp, v)
           - lapScheme->fvmLaplacian(Bh, v)
         );
-        vEqn.solve(solverControls(mesh, "vKinematic", false));
+        const dictionary controls(solverControls(mesh, "vKinematic", false));
+        const solverPerformance perf = vEqn.solve(controls);
+        if (corr == 2 && !perf.converged())
+        {
+            FatalErrorInFunction
+                << "The kinematic equation (vKinematic) did not converge:"
+                << " final residual " << perf.finalResidual() << " after "
+                << perf.nIterations() << " iterations (solver "
+                << controls.get<word>("solver") << " in system/fvSolution"
+                << " or the default). Check that constant/g points down"
+                << " the silo to the outlet patches" << nl
+                << exit(FatalError);
+        }
     }
 
-    U_ = dimensionedScalar("s", dimLength, B_)*((I - sqr(gHat)) & fvc::grad(v))
+    UNT_ = dimensionedScalar("s", dimLength, B_)*((I - sqr(gHat)) & fvc::grad(v))
        + v*gHat;
-    U_.correctBoundaryConditions();
-    updateFluxFromU();
+    UNT_.correctBoundaryConditions();
+    phiNT_ = fvc::interpolate(UNT_) & mesh.Sf();
+    forAll(mesh.boundary(), patchi)
+    {
+        if (isA<wallFvPatch>(mesh.boundary()[patchi]))
+        {
+            phiNT_.boundaryFieldRef()[patchi] = Zero;
+        }
+    }
 
-    // Project the flux onto a discretely divergence-free one
+    // Scaled to the discharge (smooth U, where a reconstruction of the
+    // projected flux is not on the cells next to the outlet)
+    scalar outflowNT = 0;
+    for (const label patchi : outletPatches_)
+    {
+        outflowNT += gSum(phiNT_.boundaryField()[patchi]);
+    }
+    if (!(outflowNT > 0))
+    {
+        FatalErrorInFunction
+            << "The kinematic flow leaves through the outlet patches at rate "
+            << outflowNT << ": check outletPatches and constant/g" << nl
+            << exit(FatalError);
+    }
+    UNT_ *= Qmesh_/outflowNT;
+    UNT_.correctBoundaryConditions();
+    phiNT_ *= Qmesh_/outflowNT;
+}
+
+
+Foam::scalar Foam::bulkFlowModels::kinematic::surfaceLevel() const
+{
+    const fvMesh& mesh = mixture_.mesh();
+    const scalar material =
+        gSum(mixture_.nTotal().primitiveField()*mesh.V())/packedFraction_;
+    return geometry_->levelOfVolume(material);
+}
+
+
+Foam::scalar Foam::bulkFlowModels::kinematic::packedLevel() const
+{
+    // The bottom of the lowest cell that is not packed (2 % short)
+    const scalarField& nTotal = mixture_.nTotal().primitiveField();
+    scalar level = geometry_->zMax();
+    forAll(nTotal, celli)
+    {
+        if (nTotal[celli] < 0.98*packedFraction_)
+        {
+            level = min(level, geometry_->cellBottom(celli));
+        }
+    }
+    return returnReduce(level, minOp<scalar>());
+}
+
+
+void Foam::bulkFlowModels::kinematic::project(const surfaceScalarField& flux)
+{
+    const fvMesh& mesh = mixture_.mesh();
+
     wordList pTypes
     (
         mesh.boundary().size(),
@@ -313,16 +507,15 @@ void Foam::bulkFlowModels::kinematic::solveVelocity()
         mesh,
         dimensionedScalar("one", dimless, 1)
     );
-    const surfaceScalarField phiNT(phi_);
     for (int corr = 0; corr < 4; ++corr)
     {
         fvScalarMatrix pEqn
         (
             pLapScheme->fvmLaplacian(unity, pK)
-         == fvc::div(phiNT)
+         == fvc::div(flux)
         );
         pEqn.solve(pControls);
-        phi_ = phiNT - pEqn.flux();
+        phi_ = flux - pEqn.flux();
     }
 
     // Scale to the discharge rate
@@ -338,23 +531,118 @@ void Foam::bulkFlowModels::kinematic::solveVelocity()
             << outflow << ": check outletPatches and constant/g" << nl
             << exit(FatalError);
     }
-    phi_ *= Q_/outflow;
+    phi_ *= Qmesh_/outflow;
+}
 
-    // U for output and for the shear rate: the Nedderman-Tuzun velocity
-    // scaled to the same discharge (smooth, where a reconstruction of the
-    // projected flux is not on the cells next to the outlet)
-    scalar outflowNT = 0;
-    for (const label patchi : outletPatches_)
+
+void Foam::bulkFlowModels::kinematic::setFlow
+(
+    const scalar zs,
+    const scalar zPacked
+)
+{
+    const fvMesh& mesh = mixture_.mesh();
+    const siloGeometry& geo = geometry_();
+    const vector gHat(normalised(mixture_.gravity()));
+
+    // The plug: the empty space above the surface and the material just
+    // below it descend at Q/A(z_s), A the section at the surface (or, with
+    // the surface at or below the orifice, the orifice)
+    const scalar zCut = max(zs, geo.orificeHeight());
+    scalar area = geo.sectionArea(min(zCut, geo.zMax() - 1e-9*(geo.zMax() - geo.zMin())));
+    if (!(area > VSMALL))
     {
-        outflowNT += gSum(phiNT.boundaryField()[patchi]);
+        area = geo.orificeArea();
     }
-    U_ *= Q_/outflowNT;
+    const vector Uplug((Qmesh_/area)*gHat);
+
+    // Depth of the layer in which the flow turns from the plug into the
+    // Nedderman-Tuzun field: the section's radius or half width
+    scalar layer = surfaceLayer_;
+    if (!(layer > 0))
+    {
+        const scalar fullArea = area*geo.fullOrificeArea()/geo.orificeArea();
+        layer =
+            geo.geometry() == siloGeometry::kind::planar
+          ? 0.5*area/geo.slotLength()
+          : sqrt(fullArea/constant::mathematical::pi);
+    }
+
+    // Weight of the Nedderman-Tuzun field: 0 from the top of the packed
+    // material up, 1 deeper than the layer below it. The shear of the
+    // turn stays in packed material, so neither the core's draw nor the
+    // shear-driven diffusion acts on the partly filled cells of the surface
+    const scalar zTurn = min(zs, zPacked);
+    auto weight = [zTurn, layer](const scalar z)
+    {
+        return min(max((zTurn - z)/layer, scalar(0)), scalar(1));
+    };
+
+    surfaceScalarField flux(phiNT_);
+    const surfaceScalarField plugFlux(mesh.Sf() & Uplug);
+    const surfaceVectorField& Cf = mesh.Cf();
+    forAll(flux, facei)
+    {
+        const scalar w = weight(geo.heightOf(Cf[facei]));
+        flux[facei] = w*phiNT_[facei] + (1 - w)*plugFlux[facei];
+    }
+    forAll(mesh.boundary(), patchi)
+    {
+        scalarField& fp = flux.boundaryFieldRef()[patchi];
+        if (isA<wallFvPatch>(mesh.boundary()[patchi]))
+        {
+            fp = Zero;
+            continue;
+        }
+        const scalarField& nt = phiNT_.boundaryField()[patchi];
+        const scalarField& pl = plugFlux.boundaryField()[patchi];
+        const vectorField& cf = Cf.boundaryField()[patchi];
+        forAll(fp, facei)
+        {
+            const scalar w = weight(geo.heightOf(cf[facei]));
+            fp[facei] = w*nt[facei] + (1 - w)*pl[facei];
+        }
+    }
+
+    project(flux);
+
+    // U for output and for the shear rate: the same blend of the
+    // (smooth) velocities
+    const volVectorField& C = mesh.C();
+    forAll(U_, celli)
+    {
+        const scalar w = weight(geo.heightOf(C[celli]));
+        U_[celli] = w*UNT_[celli] + (1 - w)*Uplug;
+    }
+    // and on the boundaries (U_ is `calculated`: the walls keep the
+    // Nedderman-Tuzun slip velocity, so the shear rate has no wall jump)
+    forAll(mesh.boundary(), patchi)
+    {
+        const fvPatch& patch = mesh.boundary()[patchi];
+        if (polyPatch::constraintType(patch.patch().type()))
+        {
+            continue;
+        }
+        vectorField& Up = U_.boundaryFieldRef()[patchi];
+        const vectorField& UNTp = UNT_.boundaryField()[patchi];
+        const vectorField& cf = patch.Cf();
+        forAll(Up, facei)
+        {
+            const scalar w = weight(geo.heightOf(cf[facei]));
+            Up[facei] = w*UNTp[facei] + (1 - w)*Uplug;
+        }
+    }
     U_.correctBoundaryConditions();
 
+    fieldLevel_ = zs;
+    packedLevel_ = zPacked;
+
     const volScalarField divPhi(fvc::div(phi_));
-    Info<< "    kinematic bulk flow: outlet flux " << Q_
+    Info<< "    kinematic bulk flow: free surface at z = " << zs
+        << " m, packed up to " << zPacked << " m (layer " << layer
+        << " m), outlet flux " << Qmesh_
         << " m3/s on the mesh, max |div(phi)|*V/Q = "
-        << gMax(mag(divPhi.primitiveField())*mesh.V())/Q_ << nl << endl;
+        << gMax(mag(divPhi.primitiveField())*mesh.V())/Qmesh_ << nl << endl;
 }
 
 
@@ -374,8 +662,9 @@ Foam::bulkFlowModels::kinematic::kinematic
             dict,
             typeName,
             {
-                "B", "outletPatches", "dischargeRate", "Q",
-                "fullOutletArea", "beverlooCoeffs"
+                "B", "outletPatches", "geometry", "dischargeRate", "Q",
+                "fullOutletArea", "beverlooCoeffs", "packedFraction",
+                "surfaceLayer"
             }
         ),
         mixture,
@@ -383,8 +672,18 @@ Foam::bulkFlowModels::kinematic::kinematic
     ),
     B_(modelCoeffs::get(coeffs_, "B", dimLength).value()),
     outletPatches_(),
+    geometry_(),
     Q_(0),
-    fullOutletArea_(0)
+    Qmesh_(0),
+    packedFraction_(0),
+    surfaceLayer_
+    (
+        modelCoeffs::getOrDefault(coeffs_, "surfaceLayer", dimLength, -1).value()
+    ),
+    UNT_(U_.name() + "NT", U_),
+    phiNT_(phi_.name() + "NT", phi_),
+    fieldLevel_(-GREAT),
+    packedLevel_(-GREAT)
 {
     const fvMesh& mesh = mixture.mesh();
 
@@ -393,6 +692,12 @@ Foam::bulkFlowModels::kinematic::kinematic
         FatalIOErrorInFunction(coeffs_)
             << "Kinematic constant 'B " << B_ << "' must be > 0 [m]" << nl
             << exit(FatalIOError);
+    }
+    if (coeffs_.found("surfaceLayer") && !(surfaceLayer_ > 0))
+    {
+        FatalIOErrorInFunction(coeffs_)
+            << "'surfaceLayer " << surfaceLayer_ << "' must be > 0 [m]"
+            << nl << exit(FatalIOError);
     }
 
     const wordRes outletNames(coeffs_.get<wordRes>("outletPatches"));
@@ -405,8 +710,49 @@ Foam::bulkFlowModels::kinematic::kinematic
             << mesh.boundaryMesh().names() << nl << exit(FatalIOError);
     }
 
+    // Optional, default the largest initial solids fraction: the silo
+    // starts packed
+    packedFraction_ = modelCoeffs::getOrDefault
+    (
+        coeffs_,
+        "packedFraction",
+        dimless,
+        gMax(mixture.nTotal().primitiveField())
+    ).value();
+    if (!(packedFraction_ > 0 && packedFraction_ <= 1))
+    {
+        if (coeffs_.found("packedFraction"))
+        {
+            FatalIOErrorInFunction(coeffs_)
+                << "'packedFraction " << packedFraction_ << "' must lie in"
+                << " (0, 1]" << nl << exit(FatalIOError);
+        }
+        // An empty silo: no material, the surface at the bottom
+        packedFraction_ = 1;
+    }
+
+    readGeometry();
     readDischargeRate();
-    solveVelocity();
+    solveNeddermanTuzun();
+    setFlow(surfaceLevel(), packedLevel());
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::bulkFlowModels::kinematic::correct()
+{
+    const scalar zs = surfaceLevel();
+    const scalar zPacked = packedLevel();
+    const scalar tolerance = 0.25*geometry_->cellHeightAt(zs);
+    if
+    (
+        mag(zs - fieldLevel_) > tolerance
+     || mag(zPacked - packedLevel_) > tolerance
+    )
+    {
+        setFlow(zs, zPacked);
+    }
 }
 
 

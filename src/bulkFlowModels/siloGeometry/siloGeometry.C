@@ -1,0 +1,363 @@
+/*---------------------------------------------------------------------------*\
+  =========                 |
+  \\      /  F ield         | segregationDegradationFoam
+   \\    /   O peration     |
+    \\  /    A nd           |
+     \\/     M anipulation  |
+\*---------------------------------------------------------------------------*/
+
+#include "siloGeometry.H"
+#include "cuttingPlane.H"
+#include "wedgePolyPatch.H"
+#include "emptyPolyPatch.H"
+#include "mathematicalConstants.H"
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+const Foam::Enum<Foam::siloGeometry::kind> Foam::siloGeometry::kindNames
+({
+    { kind::axisymmetric, "axisymmetric" },
+    { kind::planar, "planar" },
+    { kind::threeD, "threeD" },
+});
+
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+void Foam::siloGeometry::detectKind()
+{
+    label nWedge = 0;
+    label nEmpty = 0;
+    for (const polyPatch& pp : mesh_.boundaryMesh())
+    {
+        if (isA<wedgePolyPatch>(pp)) { ++nWedge; }
+        if (isA<emptyPolyPatch>(pp)) { ++nEmpty; }
+    }
+    if (nWedge)
+    {
+        kind_ = kind::axisymmetric;
+        kindReason_ = "the mesh has wedge patches";
+    }
+    else if (nEmpty)
+    {
+        kind_ = kind::planar;
+        kindReason_ = "the mesh is 2-D (empty patches)";
+    }
+    else
+    {
+        kind_ = kind::threeD;
+        kindReason_ = "the mesh has neither wedge nor empty patches";
+    }
+}
+
+
+Foam::scalar Foam::siloGeometry::cutSection
+(
+    const scalar z,
+    pointField* points
+) const
+{
+    const plane horizontal(-z*gHat_, -gHat_);
+    const cuttingPlane cut(horizontal, mesh_, false);
+
+    // The area projected on the horizontal (the cut lies in the plane)
+    scalar area = 0;
+    for (const vector& s : cut.Sf())
+    {
+        area += mag(s & gHat_);
+    }
+    if (points)
+    {
+        *points = cut.points();
+    }
+    return returnReduce(area, sumOp<scalar>());
+}
+
+
+Foam::scalar Foam::siloGeometry::slabDepth() const
+{
+    // Thinnest extent of the mesh's bounding box across gravity
+    const boundBox& bb = mesh_.bounds();
+    scalar depth = GREAT;
+    for (direction d = 0; d < vector::nComponents; ++d)
+    {
+        vector e(Zero);
+        e[d] = 1;
+        if (mag(e & gHat_) < 0.1)
+        {
+            depth = min(depth, bb.span()[d]);
+        }
+    }
+    return depth;
+}
+
+
+Foam::scalar Foam::siloGeometry::sectionSize
+(
+    const scalar area,
+    const pointField& points
+) const
+{
+    switch (kind_)
+    {
+        case kind::axisymmetric:
+        {
+            // The axis: where the wedge patches' planes meet
+            List<plane> planes;
+            for (const polyPatch& pp : mesh_.boundaryMesh())
+            {
+                if (!isA<wedgePolyPatch>(pp)) { continue; }
+                vector sumSf(sum(pp.faceAreas()));
+                vector sumCf(Zero);
+                forAll(pp, facei)
+                {
+                    sumCf += mag(pp.faceAreas()[facei])*pp.faceCentres()[facei];
+                }
+                scalar sumMagSf(sum(mag(pp.faceAreas())));
+                reduce(sumSf, sumOp<vector>());
+                reduce(sumCf, sumOp<vector>());
+                reduce(sumMagSf, sumOp<scalar>());
+                planes.append(plane(sumCf/max(sumMagSf, VSMALL), sumSf));
+            }
+            if (planes.size() != 2)
+            {
+                FatalErrorInFunction
+                    << "An axisymmetric mesh needs two wedge patches; "
+                    << planes.size() << " found" << exit(FatalError);
+            }
+            const plane::ray axis(planes[0].planeIntersect(planes[1]));
+            const vector a(normalised(axis.dir()));
+            scalar rMax = 0;
+            for (const point& p : points)
+            {
+                const vector r(p - axis.refPoint());
+                rMax = max(rMax, mag(r - (r & a)*a));
+            }
+            return 2*returnReduce(rMax, maxOp<scalar>());
+        }
+        case kind::planar:
+        {
+            return area/slotLength_;
+        }
+        case kind::threeD:
+        default:
+        {
+            return sqrt(4*area/constant::mathematical::pi);
+        }
+    }
+}
+
+
+void Foam::siloGeometry::findOrifice()
+{
+    // The outlet patches: their area projected on the horizontal, their
+    // lowest point as the bottom of the scan
+    scalar outletArea = 0;
+    scalar outletTop = -GREAT;
+    DynamicList<point> outletPoints;
+    for (const label patchi : outletPatches_)
+    {
+        const polyPatch& pp = mesh_.boundaryMesh()[patchi];
+        for (const vector& s : pp.faceAreas())
+        {
+            outletArea += mag(s & gHat_);
+        }
+        for (const point& p : pp.localPoints())
+        {
+            outletTop = max(outletTop, height(p));
+            outletPoints.append(p);
+        }
+    }
+    reduce(outletArea, sumOp<scalar>());
+    reduce(outletTop, maxOp<scalar>());
+
+    orificeHeight_ = outletTop;
+    orificeArea_ = outletArea;
+    throat_ = false;
+    pointField orificePoints(std::move(outletPoints));
+
+    // Scan the sections above the outlet for a throat; a golden-section
+    // search refines the narrowest sample
+    const label nScan = 100;
+    const scalar dz = (zMax_ - outletTop)/nScan;
+    scalar bestArea = GREAT;
+    label best = -1;
+    for (label k = 1; k < nScan; ++k)
+    {
+        const scalar a = cutSection(outletTop + k*dz);
+        if (a > VSMALL && a < bestArea)
+        {
+            bestArea = a;
+            best = k;
+        }
+    }
+    if (best > 0 && bestArea < 0.98*outletArea)
+    {
+        scalar lo = outletTop + (best - 1)*dz;
+        scalar hi = outletTop + (best + 1)*dz;
+        const scalar ratio = 0.5*(sqrt(5.0) - 1);
+        for (int iter = 0; iter < 40; ++iter)
+        {
+            const scalar z1 = hi - ratio*(hi - lo);
+            const scalar z2 = lo + ratio*(hi - lo);
+            if (cutSection(z1) < cutSection(z2))
+            {
+                hi = z2;
+            }
+            else
+            {
+                lo = z1;
+            }
+        }
+        orificeHeight_ = 0.5*(lo + hi);
+        orificeArea_ = cutSection(orificeHeight_, &orificePoints);
+        throat_ = true;
+    }
+
+    orificeSize_ = sectionSize(orificeArea_, orificePoints);
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::siloGeometry::siloGeometry
+(
+    const fvMesh& mesh,
+    const labelList& outletPatches,
+    const vector& g
+)
+:
+    mesh_(mesh),
+    gHat_(normalised(g)),
+    outletPatches_(outletPatches),
+    kind_(kind::threeD),
+    kindReason_(),
+    cellBottom_(mesh.nCells(), GREAT),
+    cellTop_(mesh.nCells(), -GREAT),
+    zMin_(GREAT),
+    zMax_(-GREAT),
+    orificeHeight_(0),
+    orificeArea_(0),
+    orificeSize_(0),
+    slotLength_(0),
+    throat_(false)
+{
+    detectKind();
+
+    const pointField& pts = mesh.points();
+    forAll(mesh.cellPoints(), celli)
+    {
+        for (const label pointi : mesh.cellPoints()[celli])
+        {
+            const scalar z = height(pts[pointi]);
+            cellBottom_[celli] = min(cellBottom_[celli], z);
+            cellTop_[celli] = max(cellTop_[celli], z);
+        }
+    }
+    zMin_ = returnReduce(min(cellBottom_), minOp<scalar>());
+    zMax_ = returnReduce(max(cellTop_), maxOp<scalar>());
+
+    if (kind_ == kind::planar)
+    {
+        // Depth: the extent along the empty direction
+        const Vector<label>& dirs = mesh.geometricD();
+        const boundBox& bb = mesh.bounds();
+        for (direction d = 0; d < vector::nComponents; ++d)
+        {
+            if (dirs[d] < 0)
+            {
+                slotLength_ = bb.span()[d];
+            }
+        }
+    }
+
+    findOrifice();
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::siloGeometry::declarePlanar()
+{
+    if (kind_ == kind::planar)
+    {
+        return;
+    }
+    kind_ = kind::planar;
+    kindReason_ = "declared planar (a slab of depth the mesh's thinnest"
+        " horizontal extent)";
+    slotLength_ = slabDepth();
+    findOrifice();
+}
+
+
+Foam::scalar Foam::siloGeometry::fullOrificeArea() const
+{
+    if (kind_ == kind::axisymmetric)
+    {
+        return constant::mathematical::pi*sqr(orificeSize_)/4;
+    }
+    return orificeArea_;
+}
+
+
+Foam::scalar Foam::siloGeometry::volumeBelow(const scalar z) const
+{
+    const scalarField& V = mesh_.V();
+    scalar volume = 0;
+    forAll(V, celli)
+    {
+        const scalar h = cellTop_[celli] - cellBottom_[celli];
+        const scalar f =
+            h > VSMALL
+          ? min(max((z - cellBottom_[celli])/h, scalar(0)), scalar(1))
+          : scalar(z > cellBottom_[celli] ? 1 : 0);
+        volume += f*V[celli];
+    }
+    return returnReduce(volume, sumOp<scalar>());
+}
+
+
+Foam::scalar Foam::siloGeometry::levelOfVolume(const scalar V) const
+{
+    scalar lo = zMin_;
+    scalar hi = zMax_;
+    if (V <= 0)
+    {
+        return lo;
+    }
+    for (int iter = 0; iter < 60 && hi - lo > 1e-12*(zMax_ - zMin_); ++iter)
+    {
+        const scalar mid = 0.5*(lo + hi);
+        if (volumeBelow(mid) < V)
+        {
+            lo = mid;
+        }
+        else
+        {
+            hi = mid;
+        }
+    }
+    return 0.5*(lo + hi);
+}
+
+
+Foam::scalar Foam::siloGeometry::cellHeightAt(const scalar z) const
+{
+    scalar sumH = 0;
+    label n = 0;
+    forAll(cellBottom_, celli)
+    {
+        if (cellBottom_[celli] <= z && z <= cellTop_[celli])
+        {
+            sumH += cellTop_[celli] - cellBottom_[celli];
+            ++n;
+        }
+    }
+    reduce(sumH, sumOp<scalar>());
+    reduce(n, sumOp<label>());
+    return n ? sumH/n : (zMax_ - zMin_);
+}
+
+
+// ************************************************************************* //
