@@ -164,7 +164,7 @@ test_outlet_composition_function_object()
 # object writes volume and number per species, dust and broken volume; the
 # solids in the silo + dust + what left through outlet and top stay equal to
 # the start (1e-6 relative, as the discharge balance above: the outlet files'
-# time integration); 0.4-0.7 % of the solids broke; every field finite and
+# time integration); 0.25-0.37 % of the solids broke; every field finite and
 # bounded
 test_silo_breakage()
 {
@@ -201,8 +201,10 @@ broken = sd[-1][col["broken[m3]"]]
 print("solids in the silo + dust + discharged: max relative change %.2e over %d steps; broken %.3e m3 (%.3f %% of the solids), dust %.3e m3"
       % (worst, len(sd), broken, 100 * broken / initial, sd[-1][col["dust[m3]"]]))
 # The broken share of the solids in 3 s that docs/user/breakage.md quotes
-# (0.52 % when written): a change of the model or of the flow shows here
-sys.exit(0 if worst < 1e-6 and 0.004 < broken / initial < 0.007 else 1)
+# (0.31 % when written, with the top of the silo descending as a plug
+# under the kinematic free surface; 0.52 % when the whole height sheared):
+# a change of the model or of the flow shows here
+sys.exit(0 if worst < 1e-6 and 0.0025 < broken / initial < 0.0037 else 1)
 PY
     grep -q "Selecting breakage model powerLaw" "$dir/log.segregationDegradationFoam" || { echo "breakage not selected"; return 1; }
     python3 -m sdfoam.fieldStats "$dir" bounds --tol 1e-8
