@@ -98,3 +98,48 @@ test_breakage_peer()
     rm -rf "$dir/breakagePeer/run" "$dir/breakagePeer/peer/run"
     "$dir/breakagePeer/Allrun"
 }
+
+# mu(I) flow down an inclined plane from rest to steady (validation/
+# inclinedPlaneMuI): Bagnold's profile to 1 % of the surface speed at 24 and
+# 28 degrees with the standard law, and at 28 degrees with the partially
+# regularised law against its own I_theta; steady to 1 % over the last 2 s
+# (the check's assertions)
+test_inclined_plane_mui()
+{
+    local dir="$workRoot/inclinedPlaneMuI" run
+    for run in "-angle 24" "-angle 28" "-angle 28 -regularised"
+    do
+        rm -rf "$dir"; mkdir -p "$dir"
+        cp -r "$validationDir/inclinedPlaneMuI" "$dir/"
+        # shellcheck disable=SC2086
+        "$dir/inclinedPlaneMuI/Allrun" $run -tol 0.01 > "$dir/log.Allrun" 2>&1 \
+            || { tail -20 "$dir/log.Allrun"; return 1; }
+        echo "Allrun $run:"; grep -E "theta|max \|u" "$dir/log.Allrun"
+    done
+}
+
+# muI's bad input: mu_s >= mu_d, a negative I_0, a negative d: each a fatal
+# error naming the entry, nothing written
+test_mui_bad_input()
+{
+    local dir="$workRoot/muIBadInput" entry value expect
+    for entry in "mu_s 0.7:'mu_d 0.643' must be > mu_s" "I_0 -0.1:'I_0 -0.1' must be > 0" "d -1e-3:'d -0.001' must be > 0"
+    do
+        value="${entry%%:*}"; expect="${entry#*:}"
+        rm -rf "$dir"; mkdir -p "$dir"
+        cp -r "$validationDir/inclinedPlaneMuI" "$dir/"
+        local case="$dir/inclinedPlaneMuI"
+        echo "${value};" > "$case/constant/muIOverrides"
+        cp "$validationDir/inclinedPlaneMuI/constant/granularProperties" "$case/constant/"
+        echo "FoamFile { version 2.0; format ascii; class uniformDimensionedVectorField; location \"constant\"; object g; } dimensions [0 1 -2 0 0 0 0]; value (4.6 0 -8.66);" > "$case/constant/g"
+        blockMesh -case "$case" > "$case/log.blockMesh" 2>&1 || return 1
+        cp -r "$case/0.orig" "$case/0"
+        if segregationDegradationFoam -case "$case" > "$case/log.solver" 2>&1
+        then
+            echo "$value accepted"; return 1
+        fi
+        grep -qF "$expect" "$case/log.solver" || { echo "$value: message lacks \"$expect\""; sed -n '/FOAM FATAL/,/FOAM exiting/p' "$case/log.solver" | head -10; return 1; }
+        [ -z "$(find "$case" -mindepth 1 -maxdepth 1 -name '0.0*' | head -1)" ] || { echo "$value: a time directory was written"; return 1; }
+        echo "$value: refused: $(grep -m1 -oF "$expect" "$case/log.solver")"
+    done
+}

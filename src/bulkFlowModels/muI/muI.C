@@ -1,0 +1,462 @@
+/*---------------------------------------------------------------------------*\
+  =========                 |
+  \\      /  F ield         | segregationDegradationFoam
+   \\    /   O peration     |
+    \\  /    A nd           |
+     \\/     M anipulation  |
+\*---------------------------------------------------------------------------*/
+
+#include "muI.H"
+#include "addToRunTimeSelectionTable.H"
+#include "fvm.H"
+#include "fvc.H"
+#include "MULES.H"
+#include "constrainHbyA.H"
+#include "constrainPressure.H"
+#include "adjustPhi.H"
+#include "findRefCell.H"
+#include "cyclicPolyPatch.H"
+#include "zeroGradientFvPatchFields.H"
+#include "geometricOneField.H"
+#include "zeroField.H"
+#include "modelCoeffs.H"
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+namespace Foam
+{
+namespace bulkFlowModels
+{
+    defineTypeNameAndDebug(muI, 0);
+    addToRunTimeSelectionTable(bulkFlowModel, muI, dictionary);
+}
+}
+
+
+// * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * * //
+
+namespace
+{
+
+// A registered, written field of the model
+Foam::IOobject writtenField(const Foam::fvMesh& mesh, const Foam::word& name)
+{
+    return Foam::IOobject
+    (
+        name,
+        mesh.time().timeName(),
+        mesh,
+        Foam::IOobject::NO_READ,
+        Foam::IOobject::AUTO_WRITE
+    );
+}
+
+// A field read from the start time, written with the results
+Foam::IOobject readField(const Foam::fvMesh& mesh, const Foam::word& name)
+{
+    return Foam::IOobject
+    (
+        name,
+        mesh.time().timeName(),
+        mesh,
+        Foam::IOobject::MUST_READ,
+        Foam::IOobject::AUTO_WRITE
+    );
+}
+
+// Positive entry of the coefficients, or the default
+Foam::scalar positiveEntry
+(
+    const Foam::dictionary& dict,
+    const Foam::word& key,
+    const Foam::scalar deflt
+)
+{
+    const Foam::scalar value = dict.getOrDefault<Foam::scalar>(key, deflt);
+    if (!(value > 0))
+    {
+        FatalIOErrorInFunction(dict)
+            << "'" << key << " " << value << "' must be > 0" << Foam::nl
+            << Foam::exit(Foam::FatalIOError);
+    }
+    return value;
+}
+
+} // End anonymous namespace
+
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+void Foam::bulkFlowModels::muI::solveAlpha()
+{
+    const fvMesh& mesh = mixture_.mesh();
+    const dictionary& controls = mesh.solverDict(alpha_.name());
+    const scalar cAlpha = controls.getOrDefault<scalar>("cAlpha", 1);
+    const label nAlphaCorr = controls.getOrDefault<label>("nAlphaCorr", 1);
+
+    // Interface compression along the interface normal (interFoam's
+    // interfaceProperties::nHatf, without surface tension)
+    surfaceScalarField phic(cAlpha*mag(phi_/mesh.magSf()));
+    forAll(phic.boundaryField(), patchi)
+    {
+        if (!phic.boundaryField()[patchi].coupled())
+        {
+            phic.boundaryFieldRef()[patchi] == 0;
+        }
+    }
+
+    for (label aCorr = 0; aCorr < nAlphaCorr; ++aCorr)
+    {
+        const surfaceVectorField gradAlphaf
+        (
+            fvc::interpolate(fvc::grad(alpha_, "grad(alpha)"))
+        );
+        const dimensionedScalar deltaN
+        (
+            "deltaN",
+            1e-8/cbrt(average(mesh.V()))
+        );
+        const surfaceScalarField nHatf
+        (
+            (gradAlphaf/(mag(gradAlphaf) + deltaN)) & mesh.Sf()
+        );
+        const surfaceScalarField phir(phic*nHatf);
+        const volScalarField alphaAir(1 - alpha_);
+
+        alphaPhi_ =
+            fvc::flux(phi_, alpha_, "div(phi,alpha)")
+          + fvc::flux
+            (
+                -fvc::flux(-phir, alphaAir, "div(phirb,alpha)"),
+                alpha_,
+                "div(phirb,alpha)"
+            );
+
+        MULES::explicitSolve
+        (
+            geometricOneField(),
+            alpha_,
+            phi_,
+            alphaPhi_,
+            oneField(),
+            zeroField()
+        );
+    }
+
+    const dimensionedScalar rhoB("rhoBulk", dimDensity, rhoBulk());
+    const dimensionedScalar rhoA("rhoAir", dimDensity, rhoAir_);
+    rhoPhi_ = alphaPhi_*(rhoB - rhoA) + phi_*rhoA;
+    rho_ = alpha_*rhoB + (1 - alpha_)*rhoA;
+
+    Info<< "    muI: bulk volume "
+        << gSum(alpha_.primitiveField()*mesh.V()) << " m3, alpha.granular"
+        << " min/max " << gMin(alpha_.primitiveField()) << "/"
+        << gMax(alpha_.primitiveField()) << endl;
+}
+
+
+void Foam::bulkFlowModels::muI::updateViscosity()
+{
+    const volScalarField gammaDot(this->gammaDot());
+    const scalarField& gD = gammaDot.primitiveField();
+    const scalarField& p = p_.primitiveField();
+    scalarField& I = I_.primitiveFieldRef();
+    scalarField& eta = eta_.primitiveFieldRef();
+
+    forAll(eta, celli)
+    {
+        const scalar pEff = max(p[celli], pMin_);
+        I[celli] = gD[celli]*d_/sqrt(pEff/rhoS_);
+        eta[celli] =
+            min(law_.mu(I[celli])*pEff/max(gD[celli], VSMALL), etaMax_);
+    }
+    I_.correctBoundaryConditions();
+    eta_.correctBoundaryConditions();
+}
+
+
+void Foam::bulkFlowModels::muI::solveFlow()
+{
+    const fvMesh& mesh = mixture_.mesh();
+
+    const volScalarField muEff
+    (
+        "muEff",
+        alpha_*eta_ + (1 - alpha_)*dimensionedScalar("muAir", dimDynamicViscosity, muAir_)
+    );
+
+    fvVectorMatrix UEqn
+    (
+        fvm::ddt(rho_, U_)
+      + fvm::div(rhoPhi_, U_, "div(rhoPhi,U)")
+      - fvm::laplacian(muEff, U_)
+      - fvc::div(muEff*dev2(T(fvc::grad(U_))))
+    );
+    UEqn.relax();
+
+    // Gravity on the faces: the hydrostatic part through p_rgh, the
+    // periodic part as a body force
+    const surfaceScalarField gravityFlux
+    (
+        -ghf_*fvc::snGrad(rho_)*mesh.magSf()
+      + fvc::interpolate(rho_)
+       *(dimensionedVector("gp", dimAcceleration, gPeriodic_) & mesh.Sf())
+    );
+
+    if (pimple_.momentumPredictor())
+    {
+        solve
+        (
+            UEqn
+         == fvc::reconstruct
+            (
+                gravityFlux - fvc::snGrad(p_rgh_)*mesh.magSf()
+            )
+        );
+    }
+
+    while (pimple_.correct())
+    {
+        const volScalarField rAU("rAU", 1.0/UEqn.A());
+        const surfaceScalarField rAUf("rAUf", fvc::interpolate(rAU));
+        volVectorField HbyA(constrainHbyA(rAU*UEqn.H(), U_, p_rgh_));
+        surfaceScalarField phiHbyA
+        (
+            "phiHbyA",
+            fvc::flux(HbyA)
+          + fvc::interpolate(rho_*rAU)*fvc::ddtCorr(U_, phi_)
+        );
+        if (p_rgh_.needReference())
+        {
+            adjustPhi(phiHbyA, U_, p_rgh_);
+        }
+
+        const surfaceScalarField phig(gravityFlux*rAUf);
+        phiHbyA += phig;
+
+        constrainPressure(p_rgh_, U_, phiHbyA, rAUf);
+
+        while (pimple_.correctNonOrthogonal())
+        {
+            fvScalarMatrix p_rghEqn
+            (
+                fvm::laplacian(rAUf, p_rgh_) == fvc::div(phiHbyA)
+            );
+            p_rghEqn.setReference(pRefCell_, getRefCellValue(p_rgh_, pRefCell_));
+            p_rghEqn.solve(mesh.solver(p_rgh_.select(pimple_.finalInnerIter())));
+
+            if (pimple_.finalNonOrthogonalIter())
+            {
+                phi_ = phiHbyA - p_rghEqn.flux();
+                p_rgh_.relax();
+                U_ = HbyA + rAU*fvc::reconstruct((phig - p_rghEqn.flux())/rAUf);
+                U_.correctBoundaryConditions();
+            }
+        }
+
+        // interFoam's continuity check: the volume error of the step
+        Info<< "    muI: continuity error max |div(phi)| dt = "
+            << gMax(mag(fvc::div(phi_))().primitiveField())
+              *mesh.time().deltaTValue() << endl;
+
+        p_ == p_rgh_ + rho_*gh_;
+        if (p_rgh_.needReference())
+        {
+            p_ += dimensionedScalar
+            (
+                "p",
+                p_.dimensions(),
+                pRefValue_ - getRefCellValue(p_, pRefCell_)
+            );
+            p_rgh_ = p_ - rho_*gh_;
+        }
+    }
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::bulkFlowModels::muI::muI
+(
+    const dictionary& dict,
+    const granularMixture& mixture
+)
+:
+    bulkFlowModel
+    (
+        typeName,
+        modelCoeffs::checked
+        (
+            dict,
+            typeName,
+            {
+                "mu_s", "mu_d", "I_0", "regularised", "d", "rhoS",
+                "packedFraction", "etaMax", "pMin", "rhoAir", "muAir"
+            }
+        ),
+        mixture,
+        true
+    ),
+    law_(coeffs_),
+    d_(0),
+    rhoS_(0),
+    packedFraction_(coeffs_.getOrDefault<scalar>("packedFraction", 0.6)),
+    etaMax_(positiveEntry(coeffs_, "etaMax", 1e3)),
+    pMin_(positiveEntry(coeffs_, "pMin", 1)),
+    rhoAir_(positiveEntry(coeffs_, "rhoAir", 1.2)),
+    muAir_(positiveEntry(coeffs_, "muAir", 1.8e-5)),
+    pimple_(const_cast<fvMesh&>(mixture.mesh())),
+    alpha_(readField(mixture.mesh(), "alpha.granular"), mixture.mesh()),
+    p_rgh_(readField(mixture.mesh(), "p_rgh"), mixture.mesh()),
+    p_(writtenField(mixture.mesh(), "p"), p_rgh_),
+    rho_
+    (
+        IOobject("rho", mixture.mesh().time().timeName(), mixture.mesh()),
+        mixture.mesh(),
+        dimensionedScalar("rho", dimDensity, Zero)
+    ),
+    I_
+    (
+        writtenField(mixture.mesh(), "I"),
+        mixture.mesh(),
+        dimensionedScalar("I", dimless, Zero),
+        zeroGradientFvPatchScalarField::typeName
+    ),
+    eta_
+    (
+        writtenField(mixture.mesh(), "eta"),
+        mixture.mesh(),
+        dimensionedScalar("eta", dimDynamicViscosity, Zero),
+        zeroGradientFvPatchScalarField::typeName
+    ),
+    alphaPhi_
+    (
+        IOobject("alphaPhi.granular", mixture.mesh().time().timeName(), mixture.mesh()),
+        mixture.mesh(),
+        dimensionedScalar("f", dimVolume/dimTime, Zero)
+    ),
+    rhoPhi_
+    (
+        IOobject("rhoPhi", mixture.mesh().time().timeName(), mixture.mesh()),
+        mixture.mesh(),
+        dimensionedScalar("f", dimMass/dimTime, Zero)
+    ),
+    gh_
+    (
+        IOobject("gh", mixture.mesh().time().timeName(), mixture.mesh()),
+        mixture.mesh(),
+        dimensionedScalar("gh", dimAcceleration*dimLength, Zero)
+    ),
+    ghf_
+    (
+        IOobject("ghf", mixture.mesh().time().timeName(), mixture.mesh()),
+        mixture.mesh(),
+        dimensionedScalar("gh", dimAcceleration*dimLength, Zero)
+    ),
+    gPeriodic_(Zero),
+    pRefCell_(0),
+    pRefValue_(0)
+{
+    const fvMesh& mesh = mixture.mesh();
+
+    // Particle diameter and density: optional, defaults the initial
+    // mixture's solids-weighted mean diameter and density
+    scalar solids = 0, dSum = 0, rhoSum = 0;
+    forAll(mixture.n(), i)
+    {
+        const scalar v = gSum(mixture.n()[i].primitiveField()*mesh.V());
+        solids += v;
+        dSum += v*mixture.d(i);
+        rhoSum += v*mixture.rho(i);
+    }
+    d_ = positiveEntry
+    (
+        coeffs_,
+        "d",
+        solids > VSMALL ? dSum/solids : mixture.d(0)
+    );
+    rhoS_ = positiveEntry
+    (
+        coeffs_,
+        "rhoS",
+        solids > VSMALL ? rhoSum/solids : mixture.rho(0)
+    );
+    if (!(packedFraction_ > 0 && packedFraction_ <= 1))
+    {
+        FatalIOErrorInFunction(coeffs_)
+            << "'packedFraction " << packedFraction_ << "' must lie in"
+            << " (0, 1]" << nl << exit(FatalIOError);
+    }
+
+    // Gravity along translational cyclic directions drives as a body force
+    const vector g(mixture.gravity());
+    DynamicList<vector> periodicDirections;
+    for (const polyPatch& pp : mesh.boundaryMesh())
+    {
+        if (!isA<cyclicPolyPatch>(pp)) { continue; }
+        const cyclicPolyPatch& cpp = refCast<const cyclicPolyPatch>(pp);
+        if (!cpp.separated() || cpp.separation().empty()) { continue; }
+        vector e(cpp.separation()[0]);
+        e /= max(mag(e), VSMALL);
+        bool known = false;
+        for (const vector& k : periodicDirections)
+        {
+            known = known || mag(k & e) > 1 - 1e-6;
+        }
+        if (!known)
+        {
+            periodicDirections.append(e);
+            gPeriodic_ += (g & e)*e;
+        }
+    }
+    reduce(gPeriodic_, maxMagSqrOp<vector>());
+    const vector gHydrostatic(g - gPeriodic_);
+
+    // gh relative to the highest point of the mesh (p = 0 there)
+    const scalar ghRef =
+        returnReduce(min(mesh.points() & gHydrostatic), minOp<scalar>());
+    const dimensionedVector gh0("g", dimAcceleration, gHydrostatic);
+    const dimensionedScalar ghRef0("ghRef", dimAcceleration*dimLength, ghRef);
+    gh_ = (gh0 & mesh.C()) - ghRef0;
+    ghf_ = (gh0 & mesh.Cf()) - ghRef0;
+
+    alpha_.correctBoundaryConditions();
+    rho_ =
+        alpha_*dimensionedScalar("rhoBulk", dimDensity, rhoBulk())
+      + (1 - alpha_)*dimensionedScalar("rhoAir", dimDensity, rhoAir_);
+    rho_.oldTime();
+    phi_ = fvc::flux(U_);
+    rhoPhi_ = fvc::interpolate(rho_)*phi_;
+
+    setRefCell(p_rgh_, pimple_.dict(), pRefCell_, pRefValue_);
+    mesh.setFluxRequired(p_rgh_.name());
+    mesh.setFluxRequired(alpha_.name());
+
+    p_ == p_rgh_ + rho_*gh_;
+    updateViscosity();
+
+    Info<< "    muI rheology: mu_s " << law_.muS() << ", mu_d " << law_.muD()
+        << ", I_0 " << law_.I0()
+        << (law_.regularised() ? ", regularised below I_N = " : ", standard")
+        << (law_.regularised() ? law_.IN() : 0) << "; d " << d_
+        << " m, rho_s " << rhoS_ << " kg/m3, bulk solids fraction "
+        << packedFraction_ << ", eta <= " << etaMax_ << " Pa s, p >= "
+        << pMin_ << " Pa; gravity " << gHydrostatic << " hydrostatic + "
+        << gPeriodic_ << " periodic" << nl << endl;
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::bulkFlowModels::muI::correct()
+{
+    while (pimple_.loop())
+    {
+        solveAlpha();
+        updateViscosity();
+        solveFlow();
+    }
+}
+
+
+// ************************************************************************* //
