@@ -341,6 +341,18 @@ Foam::bulkFlowModels::muI::muI
         mixture.mesh(),
         dimensionedScalar("f", dimMass/dimTime, Zero)
     ),
+    hRef_
+    (
+        IOobject
+        (
+            "hRef",
+            mixture.mesh().time().constant(),
+            mixture.mesh(),
+            IOobject::READ_IF_PRESENT,
+            IOobject::NO_WRITE
+        ),
+        dimensionedScalar("hRef", dimLength, Zero)
+    ),
     gh_
     (
         IOobject("gh", mixture.mesh().time().timeName(), mixture.mesh()),
@@ -412,9 +424,12 @@ Foam::bulkFlowModels::muI::muI
     reduce(gPeriodic_, maxMagSqrOp<vector>());
     const vector gHydrostatic(g - gPeriodic_);
 
-    // gh relative to the highest point of the mesh (p = 0 there)
+    // gh as interFoam and the prgh* boundary conditions take it
+    const scalar magG = mag(gHydrostatic);
     const scalar ghRef =
-        returnReduce(min(mesh.points() & gHydrostatic), minOp<scalar>());
+        magG > SMALL
+      ? (gHydrostatic & (cmptMag(gHydrostatic)/magG))*hRef_.value()
+      : 0;
     const dimensionedVector gh0("g", dimAcceleration, gHydrostatic);
     const dimensionedScalar ghRef0("ghRef", dimAcceleration*dimLength, ghRef);
     gh_ = (gh0 & mesh.C()) - ghRef0;
