@@ -20,6 +20,7 @@
 #include "geometricOneField.H"
 #include "zeroField.H"
 #include "modelCoeffs.H"
+#include "subCycle.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -87,7 +88,7 @@ Foam::scalar positiveEntry
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
-void Foam::bulkFlowModels::muI::solveAlpha()
+void Foam::bulkFlowModels::muI::advectAlpha()
 {
     const fvMesh& mesh = mixture_.mesh();
     const dictionary& controls = mesh.solverDict(alpha_.name());
@@ -142,6 +143,55 @@ void Foam::bulkFlowModels::muI::solveAlpha()
             zeroField()
         );
     }
+}
+
+
+void Foam::bulkFlowModels::muI::solveAlpha()
+{
+    const fvMesh& mesh = mixture_.mesh();
+    const dictionary& controls = mesh.solverDict(alpha_.name());
+
+    // Sub-cycles: at least nAlphaSubCycles, and enough to keep the explicit
+    // MULES step's Courant number (with the flux of this step, which may
+    // exceed the one the time step was chosen for) at or below maxAlphaCo
+    const scalar maxAlphaCo =
+        controls.getOrDefault<scalar>("maxAlphaCo", 0.5);
+    const scalar alphaCo =
+        0.5*gMax
+        (
+            fvc::surfaceSum(mag(phi_))().primitiveField()/mesh.V().field()
+        )*mesh.time().deltaTValue();
+    const label nSub = max
+    (
+        controls.getOrDefault<label>("nAlphaSubCycles", 1),
+        label(std::ceil(alphaCo/maxAlphaCo))
+    );
+
+    if (nSub > 1)
+    {
+        Time& runTime = const_cast<Time&>(mesh.time());
+        const dimensionedScalar totalDeltaT = runTime.deltaT();
+        surfaceScalarField alphaPhiSum
+        (
+            IOobject("alphaPhiSum", runTime.timeName(), mesh),
+            mesh,
+            dimensionedScalar(alphaPhi_.dimensions(), Zero)
+        );
+        for
+        (
+            subCycle<volScalarField> alphaSubCycle(alpha_, nSub);
+            !(++alphaSubCycle).end();
+        )
+        {
+            advectAlpha();
+            alphaPhiSum += (runTime.deltaT()/totalDeltaT)*alphaPhi_;
+        }
+        alphaPhi_ = alphaPhiSum;
+    }
+    else
+    {
+        advectAlpha();
+    }
 
     const dimensionedScalar rhoB("rhoBulk", dimDensity, rhoBulk());
     const dimensionedScalar rhoA("rhoAir", dimDensity, rhoAir_);
@@ -151,7 +201,8 @@ void Foam::bulkFlowModels::muI::solveAlpha()
     Info<< "    muI: bulk volume "
         << gSum(alpha_.primitiveField()*mesh.V()) << " m3, alpha.granular"
         << " min/max " << gMin(alpha_.primitiveField()) << "/"
-        << gMax(alpha_.primitiveField()) << endl;
+        << gMax(alpha_.primitiveField()) << ", " << nSub
+        << " MULES sub-cycle(s), alpha Courant number " << alphaCo << endl;
 }
 
 
