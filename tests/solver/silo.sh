@@ -332,3 +332,61 @@ test_kinematic_hopper_mesh_mismatch()
         echo "$name: refused: $(grep -m1 -o "$expect.*" "$dir/log.solver" | cut -c1-150)"
     done
 }
+
+# kinematic at the extremes, each a short silo2D run or a refusal: an empty
+# silo (no solids: the flow runs, nothing leaves, no NaN), a single species
+# (n.coarse = 0: the coarse stays 0, the fines leave at the Beverloo rate),
+# and an outlet smaller than k d (k 40: D0 - k d < 0, no flow: refused
+# naming Beverloo's D0 - k d)
+test_kinematic_extremes()
+{
+    local dir="$workRoot/kinematicExtremes" kind
+    for kind in empty singleSpecies tinyOutlet
+    do
+        copy_case "$projectDir/tutorials/silo2D" "$dir"
+        foamDictionary -entry endTime -set 0.2 "$dir/system/controlDict" > /dev/null
+        foamDictionary -entry writeInterval -set 0.1 "$dir/system/controlDict" > /dev/null
+        : > "$dir/system/caseParameters"
+        blockMesh -case "$dir" > "$dir/log.blockMesh" 2>&1 || return 1
+        cp -r "$dir/0.orig" "$dir/0"
+        case "$kind" in
+            empty)
+                foamDictionary -entry internalField -set "uniform 0" "$dir/0/n.fine" > /dev/null
+                foamDictionary -entry internalField -set "uniform 0" "$dir/0/n.coarse" > /dev/null ;;
+            singleSpecies)
+                foamDictionary -entry internalField -set "uniform 0.6" "$dir/0/n.fine" > /dev/null
+                foamDictionary -entry internalField -set "uniform 0" "$dir/0/n.coarse" > /dev/null ;;
+            tinyOutlet)
+                foamDictionary -entry bulkFlow/kinematicCoeffs/beverlooCoeffs/k -set 40 "$dir/constant/granularProperties" > /dev/null ;;
+        esac
+        if [ "$kind" = tinyOutlet ]
+        then
+            if segregationDegradationFoam -case "$dir" > "$dir/log.solver" 2>&1
+            then
+                echo "tinyOutlet: accepted"; return 1
+            fi
+            grep -q "D0 - k d = .* - 40\*0.0012 <= 0" "$dir/log.solver" || { sed -n '/FOAM FATAL/,/FOAM exiting/p' "$dir/log.solver" | head; return 1; }
+            echo "tinyOutlet: refused: $(grep -m1 -o "Beverloo: D0 - k d.*" "$dir/log.solver")"
+            continue
+        fi
+        segregationDegradationFoam -case "$dir" > "$dir/log.solver" 2>&1 || { echo "$kind:"; tail -20 "$dir/log.solver"; return 1; }
+        python3 -m sdfoam.fieldStats "$dir" bounds --tol 1e-10 || return 1
+        python3 - "$dir" "$kind" <<'PY' || return 1
+import sys
+case, kind = sys.argv[1:]
+rows = [l.split() for l in open(case + "/postProcessing/outletComposition/0/outlet.dat") if not l.startswith("#")]
+mass = [float(r[2]) for r in rows]
+coarse = max(abs(float(r[4])) for r in rows)
+if kind == "empty":
+    print("empty: %d steps, largest outlet mass flow %.3e kg/s" % (len(rows), max(mass)))
+    sys.exit(0 if max(mass) == 0 else 1)
+# 0.6 packed fines through the wedge at the Beverloo rate (d = 1 mm now)
+import math
+Q = 0.58 * math.sqrt(9.81) * (0.04 - 1.5e-3) ** 2.5 * math.tan(math.radians(30)) ** -0.35
+expected = Q * math.sin(math.radians(5)) / (2 * math.pi) * 0.6 * 2500
+worst = max(abs(m / expected - 1) for m in mass)
+print("singleSpecies: mass flow within %.2e of the Beverloo rate %.6e kg/s (d = 1 mm), largest |coarse flow| %.1e kg/s" % (worst, expected, coarse))
+sys.exit(0 if worst < 1e-6 and coarse < 1e-20 else 1)
+PY
+    done
+}
