@@ -247,7 +247,7 @@ void Foam::bulkFlowModels::kinematic::readDischargeRate()
             solids > VSMALL
           ? gSum(dMean.primitiveField()*mixture_.nTotal().primitiveField()*mesh.V())
            /solids
-          : average(dMean.primitiveField());
+          : gAverage(dMean.primitiveField());
 
         if (!(D0 - k*d > 0))
         {

@@ -16,6 +16,7 @@
 #include "adjustPhi.H"
 #include "findRefCell.H"
 #include "cyclicPolyPatch.H"
+#include "processorCyclicPolyPatch.H"
 #include "zeroGradientFvPatchFields.H"
 #include "geometricOneField.H"
 #include "zeroField.H"
@@ -106,6 +107,12 @@ void Foam::bulkFlowModels::muI::advectAlpha()
         }
     }
 
+    // The boundary values for this step's flux: an open patch whose face
+    // turned from inflow to outflow must carry the cell's alpha out, not
+    // the inflow value of the last evaluation (MULES does not limit
+    // boundary fluxes)
+    alpha_.correctBoundaryConditions();
+
     for (label aCorr = 0; aCorr < nAlphaCorr; ++aCorr)
     {
         const surfaceVectorField gradAlphaf
@@ -133,6 +140,26 @@ void Foam::bulkFlowModels::muI::advectAlpha()
                 "div(phirb,alpha)"
             );
 
+        // Upwind on the non-coupled boundaries: out with the cell's value,
+        // in with the boundary's
+        forAll(alphaPhi_.boundaryField(), patchi)
+        {
+            const fvPatchScalarField& alphap = alpha_.boundaryField()[patchi];
+            if (alphap.coupled())
+            {
+                continue;
+            }
+            const scalarField& phip = phi_.boundaryField()[patchi];
+            const scalarField alphaIn(alphap.patchInternalField());
+            scalarField& alphaPhip = alphaPhi_.boundaryFieldRef()[patchi];
+            forAll(phip, facei)
+            {
+                alphaPhip[facei] =
+                    phip[facei]
+                   *(phip[facei] >= 0 ? alphaIn[facei] : alphap[facei]);
+            }
+        }
+
         MULES::explicitSolve
         (
             geometricOneField(),
@@ -156,6 +183,12 @@ void Foam::bulkFlowModels::muI::solveAlpha()
     // exceed the one the time step was chosen for) at or below maxAlphaCo
     const scalar maxAlphaCo =
         controls.getOrDefault<scalar>("maxAlphaCo", 0.5);
+    if (!(maxAlphaCo > 0))
+    {
+        FatalIOErrorInFunction(controls)
+            << "'maxAlphaCo " << maxAlphaCo << "' must be > 0" << nl
+            << exit(FatalIOError);
+    }
     const scalar alphaCo =
         0.5*gMax
         (
@@ -359,7 +392,12 @@ Foam::bulkFlowModels::muI::muI
     pimple_(const_cast<fvMesh&>(mixture.mesh())),
     alpha_(readField(mixture.mesh(), "alpha.granular"), mixture.mesh()),
     p_rgh_(readField(mixture.mesh(), "p_rgh"), mixture.mesh()),
-    p_(writtenField(mixture.mesh(), "p"), p_rgh_),
+    p_
+    (
+        writtenField(mixture.mesh(), "p"),
+        mixture.mesh(),
+        dimensionedScalar("p", dimPressure, Zero)
+    ),
     rho_
     (
         IOobject("rho", mixture.mesh().time().timeName(), mixture.mesh()),
@@ -451,29 +489,66 @@ Foam::bulkFlowModels::muI::muI
             << " (0, 1]" << nl << exit(FatalIOError);
     }
 
-    // Gravity along translational cyclic directions drives as a body force
+    // Gravity along translational cyclic directions drives as a body force.
+    // The directions come from every cyclic and processorCyclic patch with
+    // faces on any rank (a decomposition may leave a rank's cyclic empty)
     const vector g(mixture.gravity());
-    DynamicList<vector> periodicDirections;
+    List<DynamicList<vector>> rankDirections(Pstream::nProcs());
+    DynamicList<vector>& local = rankDirections[Pstream::myProcNo()];
     for (const polyPatch& pp : mesh.boundaryMesh())
     {
-        if (!isA<cyclicPolyPatch>(pp)) { continue; }
-        const cyclicPolyPatch& cpp = refCast<const cyclicPolyPatch>(pp);
-        if (!cpp.separated() || cpp.separation().empty()) { continue; }
-        vector e(cpp.separation()[0]);
-        e /= max(mag(e), VSMALL);
-        bool known = false;
-        for (const vector& k : periodicDirections)
+        const coupledPolyPatch* cpp = nullptr;
+        if (isA<cyclicPolyPatch>(pp) || isA<processorCyclicPolyPatch>(pp))
         {
-            known = known || mag(k & e) > 1 - 1e-6;
+            cpp = &refCast<const coupledPolyPatch>(pp);
         }
-        if (!known)
+        if (!cpp || !cpp->separated() || cpp->separation().empty())
         {
-            periodicDirections.append(e);
-            gPeriodic_ += (g & e)*e;
+            continue;
+        }
+        local.append(cpp->separation()[0]/max(mag(cpp->separation()[0]), VSMALL));
+    }
+    Pstream::gatherList(rankDirections);
+    Pstream::scatterList(rankDirections);
+    DynamicList<vector> periodicDirections;
+    for (const DynamicList<vector>& directions : rankDirections)
+    {
+        for (const vector& e : directions)
+        {
+            bool known = false;
+            for (const vector& k : periodicDirections)
+            {
+                known = known || mag(k & e) > 1 - 1e-6;
+            }
+            if (!known)
+            {
+                periodicDirections.append(e);
+                gPeriodic_ += (g & e)*e;
+            }
         }
     }
-    reduce(gPeriodic_, maxMagSqrOp<vector>());
     const vector gHydrostatic(g - gPeriodic_);
+
+    // The prgh* conditions take the full g: with a periodic part they would
+    // not give p = p0 on the patch
+    if (mag(gPeriodic_) > SMALL)
+    {
+        forAll(p_rgh_.boundaryField(), patchi)
+        {
+            const word& type = p_rgh_.boundaryField()[patchi].type();
+            if (type.starts_with("prgh"))
+            {
+                FatalErrorInFunction
+                    << "p_rgh on patch "
+                    << mesh.boundary()[patchi].name() << " is " << type
+                    << ", which takes the full gravity " << g
+                    << "; the mesh is periodic along " << gPeriodic_
+                    << " (gravity there drives as a body force): use"
+                    << " totalPressure or fixedValue with constant/hRef at"
+                    << " the patch's height" << exit(FatalError);
+            }
+        }
+    }
 
     // gh as interFoam and the prgh* boundary conditions take it
     const scalar magG = mag(gHydrostatic);
@@ -494,7 +569,7 @@ Foam::bulkFlowModels::muI::muI
     phi_ = fvc::flux(U_);
     rhoPhi_ = fvc::interpolate(rho_)*phi_;
 
-    setRefCell(p_rgh_, pimple_.dict(), pRefCell_, pRefValue_);
+    setRefCell(p_, p_rgh_, pimple_.dict(), pRefCell_, pRefValue_);
     mesh.setFluxRequired(p_rgh_.name());
     mesh.setFluxRequired(alpha_.name());
 
