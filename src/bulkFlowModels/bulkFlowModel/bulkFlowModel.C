@@ -88,19 +88,23 @@ Foam::bulkFlowModel::bulkFlowModel
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-void Foam::bulkFlowModel::updateFluxFromU()
+void Foam::bulkFlowModel::noFluxThroughWalls(surfaceScalarField& flux)
 {
-    phi_ = fvc::flux(U_);
-
-    // Nothing crosses a wall, whatever value U has there
-    const fvMesh& mesh = mixture_.mesh();
+    const fvMesh& mesh = flux.mesh();
     forAll(mesh.boundary(), patchi)
     {
         if (isA<wallFvPatch>(mesh.boundary()[patchi]))
         {
-            phi_.boundaryFieldRef()[patchi] = Zero;
+            flux.boundaryFieldRef()[patchi] = Zero;
         }
     }
+}
+
+
+void Foam::bulkFlowModel::updateFluxFromU()
+{
+    phi_ = fvc::flux(U_);
+    noFluxThroughWalls(phi_);
 }
 
 

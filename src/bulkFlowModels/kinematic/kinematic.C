@@ -17,7 +17,6 @@
 #include "IStringStream.H"
 #include "zeroGradientFvPatchFields.H"
 #include "fixedValueFvPatchFields.H"
-#include "wallFvPatch.H"
 #include "mathematicalConstants.H"
 #include "modelCoeffs.H"
 #include "volFields.H"
@@ -353,13 +352,7 @@ void Foam::bulkFlowModels::kinematic::solveNeddermanTuzun()
     // conservative form then keeps the integral of v over every horizontal
     // section constant (the discharge rate), whatever the wall's slope
     surfaceScalarField phiUp("phiUp", -(mesh.Sf() & gHat));
-    forAll(mesh.boundary(), patchi)
-    {
-        if (isA<wallFvPatch>(mesh.boundary()[patchi]))
-        {
-            phiUp.boundaryFieldRef()[patchi] = Zero;
-        }
-    }
+    noFluxThroughWalls(phiUp);
     const surfaceTensorField Bh
     (
         IOobject
@@ -419,13 +412,7 @@ void Foam::bulkFlowModels::kinematic::solveNeddermanTuzun()
        + v*gHat;
     UNT_.correctBoundaryConditions();
     phiNT_ = fvc::interpolate(UNT_) & mesh.Sf();
-    forAll(mesh.boundary(), patchi)
-    {
-        if (isA<wallFvPatch>(mesh.boundary()[patchi]))
-        {
-            phiNT_.boundaryFieldRef()[patchi] = Zero;
-        }
-    }
+    noFluxThroughWalls(phiNT_);
 
     // Scaled to the discharge (smooth U, where a reconstruction of the
     // projected flux is not on the cells next to the outlet)
@@ -583,26 +570,23 @@ void Foam::bulkFlowModels::kinematic::setFlow
     const surfaceVectorField& Cf = mesh.Cf();
     forAll(flux, facei)
     {
-        const scalar w = weight(geo.heightOf(Cf[facei]));
+        const scalar w = weight(geo.height(Cf[facei]));
         flux[facei] = w*phiNT_[facei] + (1 - w)*plugFlux[facei];
     }
     forAll(mesh.boundary(), patchi)
     {
         scalarField& fp = flux.boundaryFieldRef()[patchi];
-        if (isA<wallFvPatch>(mesh.boundary()[patchi]))
-        {
-            fp = Zero;
-            continue;
-        }
         const scalarField& nt = phiNT_.boundaryField()[patchi];
         const scalarField& pl = plugFlux.boundaryField()[patchi];
         const vectorField& cf = Cf.boundaryField()[patchi];
         forAll(fp, facei)
         {
-            const scalar w = weight(geo.heightOf(cf[facei]));
+            const scalar w = weight(geo.height(cf[facei]));
             fp[facei] = w*nt[facei] + (1 - w)*pl[facei];
         }
     }
+
+    noFluxThroughWalls(flux);
 
     project(flux);
 
@@ -611,7 +595,7 @@ void Foam::bulkFlowModels::kinematic::setFlow
     const volVectorField& C = mesh.C();
     forAll(U_, celli)
     {
-        const scalar w = weight(geo.heightOf(C[celli]));
+        const scalar w = weight(geo.height(C[celli]));
         U_[celli] = w*UNT_[celli] + (1 - w)*Uplug;
     }
     // and on the boundaries (U_ is `calculated`: the walls keep the
@@ -628,7 +612,7 @@ void Foam::bulkFlowModels::kinematic::setFlow
         const vectorField& cf = patch.Cf();
         forAll(Up, facei)
         {
-            const scalar w = weight(geo.heightOf(cf[facei]));
+            const scalar w = weight(geo.height(cf[facei]));
             Up[facei] = w*UNTp[facei] + (1 - w)*Uplug;
         }
     }

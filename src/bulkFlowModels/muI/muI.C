@@ -66,15 +66,18 @@ Foam::IOobject readField(const Foam::fvMesh& mesh, const Foam::word& name)
     );
 }
 
-// Positive entry of the coefficients, or the default
+// Positive entry of the coefficients in the units of dims (or with its
+// dimensions, as every model's), or the default
 Foam::scalar positiveEntry
 (
     const Foam::dictionary& dict,
     const Foam::word& key,
+    const Foam::dimensionSet& dims,
     const Foam::scalar deflt
 )
 {
-    const Foam::scalar value = dict.getOrDefault<Foam::scalar>(key, deflt);
+    const Foam::scalar value =
+        Foam::modelCoeffs::getOrDefault(dict, key, dims, deflt).value();
     if (!(value > 0))
     {
         FatalIOErrorInFunction(dict)
@@ -385,10 +388,10 @@ Foam::bulkFlowModels::muI::muI
     d_(0),
     rhoS_(0),
     packedFraction_(coeffs_.getOrDefault<scalar>("packedFraction", 0.6)),
-    etaMax_(positiveEntry(coeffs_, "etaMax", 1e3)),
-    pMin_(positiveEntry(coeffs_, "pMin", 1)),
-    rhoAir_(positiveEntry(coeffs_, "rhoAir", 1.2)),
-    muAir_(positiveEntry(coeffs_, "muAir", 1.8e-5)),
+    etaMax_(positiveEntry(coeffs_, "etaMax", dimDynamicViscosity, 1e3)),
+    pMin_(positiveEntry(coeffs_, "pMin", dimPressure, 1)),
+    rhoAir_(positiveEntry(coeffs_, "rhoAir", dimDensity, 1.2)),
+    muAir_(positiveEntry(coeffs_, "muAir", dimDynamicViscosity, 1.8e-5)),
     pimple_(const_cast<fvMesh&>(mixture.mesh())),
     alpha_(readField(mixture.mesh(), "alpha.granular"), mixture.mesh()),
     p_rgh_(readField(mixture.mesh(), "p_rgh"), mixture.mesh()),
@@ -474,12 +477,14 @@ Foam::bulkFlowModels::muI::muI
     (
         coeffs_,
         "d",
+        dimLength,
         solids > VSMALL ? dSum/solids : mixture.d(0)
     );
     rhoS_ = positiveEntry
     (
         coeffs_,
         "rhoS",
+        dimDensity,
         solids > VSMALL ? rhoSum/solids : mixture.rho(0)
     );
     if (!(packedFraction_ > 0 && packedFraction_ <= 1))

@@ -9,7 +9,6 @@
 #include "particlePassFlow.H"
 #include "addToRunTimeSelectionTable.H"
 #include "modelCoeffs.H"
-#include "wallFvPatch.H"
 
 namespace Foam
 {
@@ -76,13 +75,7 @@ Foam::boolList Foam::bulkFlowModels::particlePass::gasVelocityClasses
             << exit(FatalIOError);
     }
     gasPhi_.reset(new surfaceScalarField(gasIO, mesh));
-    forAll(mesh.boundary(), patchi)
-    {
-        if (isA<wallFvPatch>(mesh.boundary()[patchi]))
-        {
-            gasPhi_->boundaryFieldRef()[patchi] = Zero;
-        }
-    }
+    noFluxThroughWalls(gasPhi_.ref());
     const scalar gasSpeed =
         gMax(mag(gasPhi_->primitiveField())/mesh.magSf().primitiveField());
     if (!(gasSpeed > 0))
@@ -229,14 +222,7 @@ Foam::bulkFlowModels::particlePass::particlePass
             i, surfaceScalarField(passHeader("phiPass." + name), mesh)
         );
 
-        // Nothing crosses a wall
-        forAll(mesh.boundary(), patchi)
-        {
-            if (isA<wallFvPatch>(mesh.boundary()[patchi]))
-            {
-                speciesPhi_[i].boundaryFieldRef()[patchi] = Zero;
-            }
-        }
+        noFluxThroughWalls(speciesPhi_[i]);
     }
 
     forAll(U_, celli)

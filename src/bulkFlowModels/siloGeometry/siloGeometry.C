@@ -195,18 +195,29 @@ void Foam::siloGeometry::findOrifice()
     {
         scalar lo = outletTop + (best - 1)*dz;
         scalar hi = outletTop + (best + 1)*dz;
+        // Each iteration keeps one of its two cuts for the next
         const scalar ratio = 0.5*(sqrt(5.0) - 1);
+        scalar z1 = hi - ratio*(hi - lo);
+        scalar z2 = lo + ratio*(hi - lo);
+        scalar a1 = cutSection(z1);
+        scalar a2 = cutSection(z2);
         for (int iter = 0; iter < 40; ++iter)
         {
-            const scalar z1 = hi - ratio*(hi - lo);
-            const scalar z2 = lo + ratio*(hi - lo);
-            if (cutSection(z1) < cutSection(z2))
+            if (a1 < a2)
             {
                 hi = z2;
+                z2 = z1;
+                a2 = a1;
+                z1 = hi - ratio*(hi - lo);
+                a1 = cutSection(z1);
             }
             else
             {
                 lo = z1;
+                z1 = z2;
+                a1 = a2;
+                z2 = lo + ratio*(hi - lo);
+                a2 = cutSection(z2);
             }
         }
         orificeHeight_ = 0.5*(lo + hi);
