@@ -2,16 +2,26 @@
 # segregationDegradationFoam on tutorials/silo2D (sourced by tests/run;
 # tests solver/silo/*): discharge, emptying, calibrated laws, parallel.
 
+# silo2D_case DIR [END_TIME [WRITE_INTERVAL]]: a fresh copy of
+# tutorials/silo2D at its default mesh (no caseParameters), endTime and
+# writeInterval set when given, meshed, 0 from 0.orig
+silo2D_case()
+{
+    local dir="$1" endTime="${2:-}" writeInterval="${3:-}"
+    copy_case "$projectDir/tutorials/silo2D" "$dir"
+    : > "$dir/system/caseParameters"
+    [ -z "$endTime" ] || foamDictionary -entry endTime -set "$endTime" "$dir/system/controlDict" > /dev/null
+    [ -z "$writeInterval" ] || foamDictionary -entry writeInterval -set "$writeInterval" "$dir/system/controlDict" > /dev/null
+    blockMesh -case "$dir" > "$dir/log.blockMesh" 2>&1 || { tail -5 "$dir/log.blockMesh"; return 1; }
+    cp -r "$dir/0.orig" "$dir/0"
+}
+
 # Kinematic bulk flow on silo2D: the Beverloo rate by hand, the wedge's share
 # of it through the outlet, a divergence-free flux and the outlet record
 test_kinematic_discharge()
 {
     local dir="$workRoot/kinematicDischarge"
-    copy_case "$projectDir/tutorials/silo2D" "$dir"
-    foamDictionary -entry endTime -set 0.01 "$dir/system/controlDict" > /dev/null
-    : > "$dir/system/caseParameters"
-    blockMesh -case "$dir" > "$dir/log.blockMesh" 2>&1 || return 1
-    cp -r "$dir/0.orig" "$dir/0"
+    silo2D_case "$dir" 0.01 || return 1
     segregationDegradationFoam -case "$dir" > "$dir/log.solver" 2>&1 || { tail -30 "$dir/log.solver"; return 1; }
     python3 - "$dir" <<'PY'
 import math, re, sys
@@ -41,13 +51,8 @@ PY
 test_silo_empties()
 {
     local dir="$workRoot/siloEmpties"
-    copy_case "$projectDir/tutorials/silo2D" "$dir"
+    silo2D_case "$dir" 4 1 || return 1
     foamDictionary -entry writeFields -set "(T gammaDot dMean D nTotal)" "$dir/constant/granularProperties" > /dev/null
-    foamDictionary -entry endTime -set 4 "$dir/system/controlDict" > /dev/null
-    foamDictionary -entry writeInterval -set 1 "$dir/system/controlDict" > /dev/null
-    : > "$dir/system/caseParameters"
-    blockMesh -case "$dir" > "$dir/log.blockMesh" 2>&1 || return 1
-    cp -r "$dir/0.orig" "$dir/0"
     segregationDegradationFoam -case "$dir" > "$dir/log.solver" 2>&1 || { tail -30 "$dir/log.solver"; return 1; }
     python3 -m sdfoam.fieldStats "$dir" emptied || return 1
     python3 -m sdfoam.fieldStats "$dir" bounds --tol 1e-8 || return 1
@@ -89,12 +94,7 @@ test_silo_parallel()
     local d
     for d in "$serial" "$parallel"
     do
-        copy_case "$projectDir/tutorials/silo2D" "$d"
-        foamDictionary -entry endTime -set 1 "$d/system/controlDict" > /dev/null
-        foamDictionary -entry writeInterval -set 1 "$d/system/controlDict" > /dev/null
-        : > "$d/system/caseParameters"
-        blockMesh -case "$d" > "$d/log.blockMesh" 2>&1 || return 1
-        cp -r "$d/0.orig" "$d/0"
+        silo2D_case "$d" 1 1 || return 1
     done
     segregationDegradationFoam -case "$serial" > "$serial/log.solver" 2>&1 || { tail -20 "$serial/log.solver"; return 1; }
     decomposePar -case "$parallel" > "$parallel/log.decomposePar" 2>&1 || { tail -20 "$parallel/log.decomposePar"; return 1; }
@@ -108,11 +108,8 @@ test_silo_parallel()
 test_kinematic_unread_entry()
 {
     local dir="$workRoot/kinematicUnreadEntry"
-    copy_case "$projectDir/tutorials/silo2D" "$dir"
-    : > "$dir/system/caseParameters"
+    silo2D_case "$dir" || return 1
     foamDictionary -entry bulkFlow/kinematicCoeffs/Q -add 1e-4 "$dir/constant/granularProperties" > /dev/null
-    blockMesh -case "$dir" > "$dir/log.blockMesh" 2>&1 || return 1
-    cp -r "$dir/0.orig" "$dir/0"
     if segregationDegradationFoam -case "$dir" > "$dir/log.solver" 2>&1
     then
         echo "an unread Q was accepted"; return 1
@@ -131,12 +128,7 @@ test_kinematic_unread_entry()
 test_outlet_composition_function_object()
 {
     local dir="$workRoot/outletCompositionFO"
-    copy_case "$projectDir/tutorials/silo2D" "$dir"
-    : > "$dir/system/caseParameters"
-    foamDictionary -entry endTime -set 0.05 "$dir/system/controlDict" > /dev/null
-    foamDictionary -entry writeInterval -set 0.025 "$dir/system/controlDict" > /dev/null
-    blockMesh -case "$dir" > "$dir/log.blockMesh" 2>&1 || return 1
-    cp -r "$dir/0.orig" "$dir/0"
+    silo2D_case "$dir" 0.05 0.025 || return 1
     segregationDegradationFoam -case "$dir" > "$dir/log.solver" 2>&1 || { tail -20 "$dir/log.solver"; return 1; }
     local out="$dir/postProcessing/outletComposition/0"
     [ -s "$out/outlet.dat" ] || { echo "no outlet.dat"; return 1; }
@@ -217,13 +209,8 @@ PY
 test_kinematic_free_surface()
 {
     local dir="$workRoot/kinematicFreeSurface"
-    copy_case "$projectDir/tutorials/silo2D" "$dir"
+    silo2D_case "$dir" 60 10 || return 1
     foamDictionary -entry writeFields -set "(T gammaDot dMean D nTotal)" "$dir/constant/granularProperties" > /dev/null
-    foamDictionary -entry endTime -set 60 "$dir/system/controlDict" > /dev/null
-    foamDictionary -entry writeInterval -set 10 "$dir/system/controlDict" > /dev/null
-    : > "$dir/system/caseParameters"
-    blockMesh -case "$dir" > "$dir/log.blockMesh" 2>&1 || return 1
-    cp -r "$dir/0.orig" "$dir/0"
     segregationDegradationFoam -case "$dir" > "$dir/log.solver" 2>&1 || { tail -30 "$dir/log.solver"; return 1; }
     python3 "$projectDir/tests/solver/silo/freeSurface.py" "$dir" || return 1
     python3 -m sdfoam.fieldStats "$dir" bounds --tol 1e-6
@@ -343,12 +330,7 @@ test_kinematic_extremes()
     local dir="$workRoot/kinematicExtremes" kind
     for kind in empty singleSpecies tinyOutlet
     do
-        copy_case "$projectDir/tutorials/silo2D" "$dir"
-        foamDictionary -entry endTime -set 0.2 "$dir/system/controlDict" > /dev/null
-        foamDictionary -entry writeInterval -set 0.1 "$dir/system/controlDict" > /dev/null
-        : > "$dir/system/caseParameters"
-        blockMesh -case "$dir" > "$dir/log.blockMesh" 2>&1 || return 1
-        cp -r "$dir/0.orig" "$dir/0"
+        silo2D_case "$dir" 0.2 0.1 || return 1
         case "$kind" in
             empty)
                 foamDictionary -entry internalField -set "uniform 0" "$dir/0/n.fine" > /dev/null
