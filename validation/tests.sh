@@ -142,6 +142,84 @@ test_mui_bad_input()
         [ -z "$(find "$case" -mindepth 1 -maxdepth 1 -name '0.0*' | head -1)" ] || { echo "$value: a time directory was written"; return 1; }
         echo "$value: refused: $(grep -m1 -oF "$expect" "$case/log.solver")"
     done
+    # The wall condition: an unknown model (OpenFOAM's selection lists the
+    # valid types) and a wall friction angle outside [0, 90)
+    for entry in "coulombFriction; wallFrictionAngle 20:Unknown patchField type coulombFriction" "coulombWallFriction; wallFrictionAngle 95:'wallFrictionAngle 95' on patch bed of U must lie in [0, 90)" "coulombWallFriction:Entry 'wallFrictionAngle' not found"
+    do
+        value="${entry%%:*}"; expect="${entry#*:}"
+        rm -rf "$dir"; mkdir -p "$dir"
+        cp -r "$validationDir/inclinedPlaneMuI" "$dir/"
+        local case="$dir/inclinedPlaneMuI"
+        echo "FoamFile { version 2.0; format ascii; class uniformDimensionedVectorField; location \"constant\"; object g; } dimensions [0 1 -2 0 0 0 0]; value (4.6 0 -8.66);" > "$case/constant/g"
+        blockMesh -case "$case" > "$case/log.blockMesh" 2>&1 || return 1
+        cp -r "$case/0.orig" "$case/0"
+        foamDictionary -case "$case" -entry boundaryField.bed -set "{ type ${value}; value uniform (0 0 0); }" "$case/0/U" > /dev/null || return 1
+        if segregationDegradationFoam -case "$case" > "$case/log.solver" 2>&1
+        then
+            echo "bed $value accepted"; return 1
+        fi
+        grep -qF "$expect" "$case/log.solver" || { echo "bed $value: message lacks \"$expect\""; sed -n '/FOAM FATAL/,/FOAM exiting/p' "$case/log.solver" | head -10; return 1; }
+        grep -q "FOAM FATAL IO ERROR" "$case/log.solver" || { echo "bed $value: not a FatalIOError"; return 1; }
+        echo "bed U $value: refused: $(grep -m1 -oF "$expect" "$case/log.solver")"
+    done
+}
+
+# Coulomb wall friction (coulombWallFriction on U) under the inclined layer
+# (validation/inclinedPlaneMuI -wallFriction): from rest, the layer's
+# mass-weighted mean velocity follows a t, a = g (sin theta - tan delta_w
+# cos theta), to 1 % of a t_end over 1 s when the bed slides (20 degrees on
+# a 12-degree wall: a plug, the bulk below yield; 28 degrees on a 20-degree
+# wall: sliding and shearing), and the layer stays at rest (bulk speed
+# below 1e-3 of the frictionless a t_end) when tan delta_w > tan theta
+test_mui_coulomb_wall()
+{
+    local dir="$workRoot/muICoulombWall" run
+    for run in "-angle 20 -wallFriction 12" "-angle 20 -wallFriction 25" "-angle 28 -wallFriction 20"
+    do
+        rm -rf "$dir"; mkdir -p "$dir"
+        cp -r "$validationDir/inclinedPlaneMuI" "$dir/"
+        # shellcheck disable=SC2086
+        "$dir/inclinedPlaneMuI/Allrun" $run -tol 0.01 > "$dir/log.Allrun" 2>&1 \
+            || { tail -20 "$dir/log.Allrun"; return 1; }
+        echo "Allrun $run:"; grep -E "slides|sticks" "$dir/log.Allrun"
+    done
+}
+
+# A bed below yield (I -> 0 in the whole layer): 20 degrees < atan(mu_s)
+# on a no-slip bed, 1 s from rest. The bulk's viscosity sits at the cap
+# etaMax (1e3 Pa s) and the layer creeps at the Newtonian rate of that cap,
+# u_s = rho g sin(theta) h^2 / (2 etaMax) = 2.52e-4 m/s (to 10 %); the
+# pressure at the bed is hydrostatic to 1 %; no field holds a non-finite
+# value; eta never exceeds etaMax
+test_mui_stagnant_bed()
+{
+    local dir="$workRoot/muIStagnantBed"
+    rm -rf "$dir"; mkdir -p "$dir"
+    cp -r "$validationDir/inclinedPlaneMuI" "$dir/"
+    local case="$dir/inclinedPlaneMuI"
+    "$case/Allrun" -angle 20 -wallFriction noSlip -tol 1e-3 > "$dir/log.Allrun" 2>&1 \
+        || { tail -20 "$dir/log.Allrun"; return 1; }
+    grep -E "sticks" "$dir/log.Allrun"
+    python3 - "$case" <<'PY' || return 1
+import math, sys
+from sdfoam import foamcase
+case = sys.argv[1]
+t = foamcase.latestTime(case)
+U = foamcase.readVectorField(case, t, "U")
+p = foamcase.readScalarField(case, t, "p")
+eta = [max(foamcase.readScalarField(case, s, "eta")) for s in foamcase.timeDirs(case)]
+alpha = foamcase.readScalarField(case, t, "alpha.granular")
+bulk = [i for i, a in enumerate(alpha) if a >= 0.99]
+theta, rho, h, dz = math.radians(20), 1500.0, 0.01, 0.015 / 75
+uCreep = rho * 9.81 * math.sin(theta) * h * h / (2 * 1e3)
+uTop = max(U[i][0] for i in bulk)
+pBed = rho * 9.81 * math.cos(theta) * (h - 0.5 * dz)
+print("creep at the surface %.4e m/s against %.4e (Newtonian at etaMax); bed cell p %.2f Pa against %.2f hydrostatic; max eta over %d times %.6g Pa s"
+      % (uTop, uCreep, p[0], pBed, len(eta), max(eta)))
+ok = abs(uTop / uCreep - 1) < 0.1 and abs(p[0] / pBed - 1) < 0.01 and max(eta) <= 1e3 * (1 + 1e-12)
+sys.exit(0 if ok else 1)
+PY
+    python3 -m sdfoam.fieldStats "$case" bounds --tol 1e-8
 }
 
 # The inclined-plane mu(I) flow at 28 degrees on 2 ranks gives the serial

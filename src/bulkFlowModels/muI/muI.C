@@ -266,11 +266,10 @@ void Foam::bulkFlowModels::muI::solveFlow()
 {
     const fvMesh& mesh = mixture_.mesh();
 
-    const volScalarField muEff
-    (
-        "muEff",
-        alpha_*eta_ + (1 - alpha_)*dimensionedScalar("muAir", dimDynamicViscosity, muAir_)
-    );
+    muEff_ =
+        alpha_*eta_
+      + (1 - alpha_)*dimensionedScalar("muAir", dimDynamicViscosity, muAir_);
+    const volScalarField& muEff = muEff_;
 
     fvVectorMatrix UEqn
     (
@@ -313,21 +312,47 @@ void Foam::bulkFlowModels::muI::solveFlow()
             fvc::flux(HbyA)
           + fvc::interpolate(rho_*rAU)*fvc::ddtCorr(U_, phi_)
         );
+
+        // SIMPLEC (PIMPLE { consistent yes; }, as pimpleFoam's): where the
+        // viscous coupling to the neighbours dominates the diagonal (a
+        // stagnant bulk, eta up to etaMax, 1e4-1e8 x rho/deltaT), the
+        // momentum predictor spreads every pressure error through the bulk
+        // and PISO's correction with 1/A cannot take it back: the pressure
+        // diverges within a few steps (interFoam does the same with a
+        // 1e3 Pa s liquid). The correction with 1/(A - H1), about
+        // deltaT/rho there, does not. pimpleFoam floors A - H1 at 0.1 A,
+        // which for a viscous bulk is the 1/A correction again; the floor
+        // here is the inertia rho/deltaT. The face forces of the last
+        // pressure move to HbyA with the difference, so the converged flow
+        // is the same
+        volScalarField rAtU("rAtU", rAU);
+        if (pimple_.consistent())
+        {
+            rAtU = 1.0/max(1.0/rAU - UEqn.H1(), rho_/mesh.time().deltaT());
+            const surfaceScalarField faceForce
+            (
+                gravityFlux - fvc::snGrad(p_rgh_)*mesh.magSf()
+            );
+            phiHbyA += (rAUf - fvc::interpolate(rAtU))*faceForce;
+            HbyA += (rAU - rAtU)*fvc::reconstruct(faceForce);
+        }
+        const surfaceScalarField rAtUf("rAtUf", fvc::interpolate(rAtU));
+
         if (p_rgh_.needReference())
         {
             adjustPhi(phiHbyA, U_, p_rgh_);
         }
 
-        const surfaceScalarField phig(gravityFlux*rAUf);
+        const surfaceScalarField phig(gravityFlux*rAtUf);
         phiHbyA += phig;
 
-        constrainPressure(p_rgh_, U_, phiHbyA, rAUf);
+        constrainPressure(p_rgh_, U_, phiHbyA, rAtUf);
 
         while (pimple_.correctNonOrthogonal())
         {
             fvScalarMatrix p_rghEqn
             (
-                fvm::laplacian(rAUf, p_rgh_) == fvc::div(phiHbyA)
+                fvm::laplacian(rAtUf, p_rgh_) == fvc::div(phiHbyA)
             );
             p_rghEqn.setReference(pRefCell_, getRefCellValue(p_rgh_, pRefCell_));
             p_rghEqn.solve(mesh.solver(p_rgh_.select(pimple_.finalInnerIter())));
@@ -336,7 +361,7 @@ void Foam::bulkFlowModels::muI::solveFlow()
             {
                 phi_ = phiHbyA - p_rghEqn.flux();
                 p_rgh_.relax();
-                U_ = HbyA + rAU*fvc::reconstruct((phig - p_rghEqn.flux())/rAUf);
+                U_ = HbyA + rAtU*fvc::reconstruct((phig - p_rghEqn.flux())/rAtUf);
                 U_.correctBoundaryConditions();
             }
         }
@@ -420,6 +445,12 @@ Foam::bulkFlowModels::muI::muI
         mixture.mesh(),
         dimensionedScalar("eta", dimDynamicViscosity, Zero),
         zeroGradientFvPatchScalarField::typeName
+    ),
+    muEff_
+    (
+        IOobject("muEff", mixture.mesh().time().timeName(), mixture.mesh()),
+        mixture.mesh(),
+        dimensionedScalar("muEff", dimDynamicViscosity, Zero)
     ),
     alphaPhi_
     (
@@ -573,6 +604,15 @@ Foam::bulkFlowModels::muI::muI
     rho_.oldTime();
     phi_ = fvc::flux(U_);
     rhoPhi_ = fvc::interpolate(rho_)*phi_;
+
+    if (!pimple_.consistent())
+    {
+        WarningInFunction
+            << "bulkFlow muI with PISO's pressure correction (PIMPLE"
+            << " consistent no in system/fvSolution): where the bulk stands"
+            << " still (viscosity at etaMax) the pressure diverges; silos,"
+            << " hoppers and beds at rest need 'consistent yes;'" << endl;
+    }
 
     setRefCell(p_, p_rgh_, pimple_.dict(), pRefCell_, pRefValue_);
     mesh.setFluxRequired(p_rgh_.name());
