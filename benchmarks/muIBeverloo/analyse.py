@@ -1,0 +1,113 @@
+#!/usr/bin/env python3
+"""benchmarks/muIBeverloo: rates, constancy and the Beverloo fit.
+
+Usage: analyse.py WORK RESULTS
+
+Reads WORK/<run>/postProcessing/outletComposition/0/outlet.dat (mass flow
+through the slot of a one-cell-deep planar bin) and the run's Allrun
+options (WORK/runs.txt); writes RESULTS and WORK/<run>.rate (t, mass flow
+per metre of slot) and WORK/fit.dat for the plot.
+
+Rate: the time-weighted mean mass flow per metre of slot W over
+[0.3 s, end] (`empty`: until 60 % of the fill has left). Constancy: the
+largest |W_0.1 - W| / W over consecutive 0.1 s windows of that interval.
+Fit: W = rho_b C sqrt(g) (b - k d)^n over the `fit` runs, rho_b = 0.6 x
+2500 kg/m3, d = 1.2 mm (the mixture's solids-weighted mean, muI's d): k
+on a grid of 0.01 d (0-6), n and C by least squares in log W at each k,
+the k of least squares kept; and with k = 1.5 fixed (Beverloo's k).
+"""
+import math
+import os
+import sys
+
+work, results = sys.argv[1], sys.argv[2]
+g, rhoBulk, d = 9.81, 0.6 * 2500.0, 1.2e-3
+tStart, window = 0.3, 0.1
+
+runs = []
+for line in open(os.path.join(work, "runs.txt")):
+    if line.strip():
+        name, *opts = line.split()
+        o = dict(zip(opts[::2], opts[1::2]))
+        runs.append((name, {k.lstrip("-"): float(v) for k, v in o.items()}))
+
+
+def outlet(name, depth):
+    rows = [l.split() for l in open(os.path.join(work, name, "postProcessing", "outletComposition", "0", "outlet.dat"))
+            if not l.startswith("#")]
+    return [(float(r[0]), float(r[2]) / depth, (float(r[-2]) + float(r[-1])) / depth) for r in rows]
+
+
+def mean(series, t0, t1):
+    """Time-weighted mean of (t, w) on [t0, t1] (the solver's steps)."""
+    acc = span = 0.0
+    for (ta, wa), (tb, wb) in zip(series, series[1:]):
+        a, b = max(ta, t0), min(tb, t1)
+        if b > a:
+            acc += 0.5 * (wa + wb) * (b - a)
+            span += b - a
+    return acc / span if span > 0 else float("nan")
+
+
+rates = {}
+with open(results, "w") as out:
+    out.write("# benchmarks/muIBeverloo: planar flat-bottomed bin, bulkFlow muI (validation/planarSiloMuI),\n")
+    out.write("# mass flow per metre of slot W [kg/s/m]; rho_b %.0f kg/m3, d %.1f mm\n" % (rhoBulk, d * 1e3))
+    out.write("# run b[mm] dx[mm] hFill[m] W[kg/s/m] window[s] constancy(max 0.1s dev) discharged_in_window\n")
+    for name, o in runs:
+        series = outlet(name, o["dx"])
+        ts = [(t, w) for t, w, _ in series]
+        fill = o["hFill"] * o["W"] * rhoBulk
+        tEnd = series[-1][0]
+        if name.startswith("empty"):
+            tEnd = next((t for t, _, m in series if m > 0.6 * fill), tEnd)
+        W = mean(ts, tStart, tEnd)
+        edges = [tStart + i * window for i in range(int((tEnd - tStart) / window + 1e-9))]
+        dev = max(abs(mean(ts, a, a + window) / W - 1) for a in edges)
+        massIn = [m for t, _, m in series if tStart <= t <= tEnd]
+        frac = (massIn[-1] - massIn[0]) / fill
+        rates[name] = (o, W, dev)
+        out.write("%-11s %5.1f %4.1f %5.2f %9.4f %4.2f-%4.2f %.2e %.3f\n"
+                  % (name, o["b"] * 1e3, o["dx"] * 1e3, o["hFill"], W, tStart, tEnd, dev, frac))
+        with open(os.path.join(work, name + ".rate"), "w") as f:
+            f.write("# t[s] W[kg/s/m] discharged_fraction\n")
+            for t, w, m in series:
+                f.write("%.5f %.6f %.5f\n" % (t, w, m / fill))
+
+    fit = [(o["b"], W) for name, (o, W, _) in rates.items() if name.startswith("fit")]
+
+    def lsq(k):
+        xs = [math.log(b - k * d) for b, _ in fit]
+        ys = [math.log(W) for _, W in fit]
+        n = len(xs)
+        mx, my = sum(xs) / n, sum(ys) / n
+        sxx = sum((x - mx) ** 2 for x in xs)
+        slope = sum((x - mx) * (y - my) for x, y in zip(xs, ys)) / sxx
+        icept = my - slope * mx
+        res = sum((y - icept - slope * x) ** 2 for x, y in zip(xs, ys))
+        return res, slope, icept, sxx
+
+    best = min((lsq(k / 100.0) + (k / 100.0,) for k in range(0, 601) if min(b for b, _ in fit) > k / 100.0 * d),
+               key=lambda r: r[0])
+    res, n, icept, sxx, k = best
+    C = math.exp(icept) / (rhoBulk * math.sqrt(g))
+    res15, n15, icept15, sxx15 = lsq(1.5)
+    se15 = math.sqrt(res15 / (len(fit) - 2) / sxx15)
+    C15 = math.exp(icept15) / (rhoBulk * math.sqrt(g))
+    # C at n = 3/2 and k = 1.5 (the slot law's form)
+    C32 = sum(W / (rhoBulk * math.sqrt(g) * (b - 1.5 * d) ** 1.5) for b, W in fit) / len(fit)
+    out.write("# Beverloo fit over b = %s mm: n %.3f, C %.4f, k %.2f (residual %.2e in log W)\n"
+              % (", ".join("%.0f" % (b * 1e3) for b, _ in fit), n, C, k, res))
+    out.write("# with k = 1.5: n %.3f +- %.3f (standard error), C %.4f\n" % (n15, se15, C15))
+    out.write("# with n = 3/2, k = 1.5: C %.4f (slot law C = 1.03, Nedderman after Myers & Sellers)\n" % C32)
+    out.write("# height_b20 / coarse_b20 (fill height 0.42 / 0.34 m): %.4f\n"
+              % (rates["height_b20"][1] / rates["coarse_b20"][1]))
+    for b in (20, 30):
+        out.write("# coarse_b%d / fit_b%d (5 / 2.5 mm cells): %.4f\n"
+                  % (b, b, rates["coarse_b%d" % b][1] / rates["fit_b%d" % b][1]))
+    with open(os.path.join(work, "fit.dat"), "w") as f:
+        f.write("# b[m] W[kg/s/m] fit(n,C,k) slotLaw(1.03, k 1.5, n 1.5)\n")
+        for b, W in sorted(fit):
+            f.write("%.4f %.5f %.5f %.5f\n" % (b, W, rhoBulk * C * math.sqrt(g) * (b - k * d) ** n,
+                                              rhoBulk * 1.03 * math.sqrt(g) * (b - 1.5 * d) ** 1.5))
+print(open(results).read())
