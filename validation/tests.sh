@@ -307,6 +307,75 @@ sys.exit(0 if ok else 1)
 PY
 }
 
+# mu(I) silo extremes on the planar bin (5 mm cells, 0.5 s): an empty bin
+# (nothing leaves, nothing non-finite); a bin filled to the brim (no air
+# above it at the start) and the fines alone (n.coarse stays 0 exactly):
+# species bounded, the solids lost from the bin equal those through the
+# slot and the top to 1e-6, through the top below the brim under 1e-5 of
+# the slot's (5.7e-7 measured). From the brim 10 % of the slot's leaves
+# through the top
+# (the species ride the mixture's flux, and traces smeared across the
+# interface ride the air out: a known defect, docs/validation.md), which is
+# printed, not asserted; a slot not wider than k d
+# (d 8 mm in I, 10 mm slot: refused naming outletPatches, nothing written)
+test_mui_silo_extremes()
+{
+    local dir="$workRoot/muISiloExtremes" name
+    rm -rf "$dir"; mkdir -p "$dir"
+    for run in "empty -hFill 0 -endTime 0.5" "brim -hFill 0.3 -endTime 0.5" "fines -coarse 0 -endTime 0.5"
+    do
+        # shellcheck disable=SC2086
+        set -- $run
+        name="$1"; shift
+        cp -r "$validationDir/planarSiloMuI" "$dir/$name"
+        "$dir/$name/Allrun" -dx 5e-3 "$@" > "$dir/log.$name" 2>&1 || { tail -20 "$dir/log.$name"; return 1; }
+        python3 -m sdfoam.fieldStats "$dir/$name" bounds --tol 1e-8 || return 1
+    done
+    python3 - "$dir" <<'PY' || return 1
+import re, sys
+from sdfoam import foamcase
+work = sys.argv[1]
+ok = True
+def cumulative(case, patch):
+    rows = [l.split() for l in open(case + "/postProcessing/outletComposition/0/" + patch + ".dat") if not l.startswith("#")]
+    return [(float(r[0]), sum(float(x) for x in r[-2:]) / 2500) for r in rows]
+for name in ("empty", "brim", "fines"):
+    case = work + "/" + name
+    log = open(case + "/log.segregationDegradationFoam").read()
+    total = [float(x) for x in re.findall(r"Solids: total volume (\S+)", log)]
+    out, top = cumulative(case, "outlet"), cumulative(case, "atmosphere")
+    initial = total[0] + out[0][1] + top[0][1]
+    lost = initial - total[-1]
+    left = out[-1][1] + top[-1][1]
+    coarse = max(max(foamcase.readScalarField(case, t, "n.coarse")) for t in foamcase.timeDirs(case))
+    if name == "empty":
+        good = total[-1] == 0 and left == 0
+        print("empty bin: solids %.3e m3 at the end, %.3e m3 out" % (total[-1], left))
+    else:
+        imbalance = abs(lost - left) / left
+        print("%s: solids lost from the bin %.6e m3 of %.4e; through the slot %.6e, through the top %.3e (%.2e of the slot's): imbalance %.2e; largest n.coarse %.3g"
+              % (name, lost, initial, out[-1][1], top[-1][1], top[-1][1] / out[-1][1], imbalance, coarse))
+        good = out[-1][1] > 0.05 * initial and imbalance < 1e-6
+        # Below the brim nothing may leave through the top
+        if name != "brim":
+            good = good and top[-1][1] < 1e-5 * out[-1][1]
+        if name == "fines":
+            good = good and coarse == 0
+    ok = ok and good
+sys.exit(0 if ok else 1)
+PY
+    cp -r "$validationDir/planarSiloMuI" "$dir/narrow"
+    if "$dir/narrow/Allrun" -dx 5e-3 -b 0.01 -W 0.16 -d 8e-3 -endTime 0.05 > "$dir/log.narrow" 2>&1
+    then
+        echo "a 10 mm slot with d = 8 mm was accepted"; return 1
+    fi
+    local expect="the orifice is 0.01 m wide (a slot), not more than k d = 1.5 x 0.008 m"
+    grep -qF "$expect" "$dir/narrow/log.segregationDegradationFoam" || { echo "message lacks \"$expect\""; sed -n '/FOAM FATAL/,/FOAM exiting/p' "$dir/narrow/log.segregationDegradationFoam" | head; return 1; }
+    grep -q "FOAM FATAL IO ERROR" "$dir/narrow/log.segregationDegradationFoam" || return 1
+    [ -z "$(find "$dir/narrow" -mindepth 1 -maxdepth 1 -name '0.0*' | head -1)" ] || { echo "narrow: a time directory was written"; return 1; }
+    echo "narrow slot refused: $(grep -m1 -oF "outletPatches 1(outlet): $expect" "$dir/narrow/log.segregationDegradationFoam")"
+}
+
 # A planar bin discharged through a slot with the mu(I) bulk flow (validation/
 # planarSiloMuI, coarse mesh, 0.5 s): the solids that left the bin equal
 # those through the outlet (1e-6 relative: the outlet record's time

@@ -22,6 +22,7 @@
 #include "zeroField.H"
 #include "modelCoeffs.H"
 #include "subCycle.H"
+#include "siloGeometry.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -403,7 +404,8 @@ Foam::bulkFlowModels::muI::muI
             typeName,
             {
                 "mu_s", "mu_d", "I_0", "regularised", "d", "rhoS",
-                "packedFraction", "etaMax", "pMin", "rhoAir", "muAir"
+                "packedFraction", "etaMax", "pMin", "rhoAir", "muAir",
+                "outletPatches"
             }
         ),
         mixture,
@@ -604,6 +606,55 @@ Foam::bulkFlowModels::muI::muI
     rho_.oldTime();
     phi_ = fvc::flux(U_);
     rhoPhi_ = fvc::interpolate(rho_)*phi_;
+
+    // The orifice against the particles: a bulk arches over an orifice
+    // narrower than about k d (Beverloo's k = 1.5); the continuum cannot
+    // arch, so it would discharge where a silo does not
+    if (coeffs_.found("outletPatches"))
+    {
+        const wordRes outletNames(coeffs_.get<wordRes>("outletPatches"));
+        const labelList outlets
+        (
+            mesh.boundaryMesh().patchSet(outletNames).sortedToc()
+        );
+        if (outlets.empty())
+        {
+            FatalIOErrorInFunction(coeffs_)
+                << "outletPatches " << outletNames << " match no patch;"
+                << " patches: " << mesh.boundaryMesh().names() << nl
+                << exit(FatalIOError);
+        }
+        const siloGeometry geometry(mesh, outlets, normalised(g));
+        const bool planar = geometry.geometry() == siloGeometry::kind::planar;
+        const scalar D0 = geometry.orificeSize();
+        const scalar k = 1.5;
+        if (!(D0 - k*d_ > 0))
+        {
+            FatalIOErrorInFunction(coeffs_)
+                << "outletPatches " << outletNames << ": the orifice is "
+                << D0 << " m " << (planar ? "wide (a slot)" : "across")
+                << ", not more than k d = " << k << " x " << d_ << " m"
+                << " (Beverloo's k, d the particle diameter 'd'): the bulk"
+                << " arches over it and does not flow; the mu(I) continuum"
+                << " cannot arch, so the run is refused" << nl
+                << exit(FatalIOError);
+        }
+        Info<< "    muI: orifice " << D0 << " m ("
+            << siloGeometry::kindNames[geometry.geometry()] << ", "
+            << geometry.kindReason() << "); Beverloo's law for comparison: "
+            << (
+                   planar
+                 ? "1.03 sqrt(g) L (b - 1.5 d)^1.5 = "
+                 : "0.58 sqrt(g) (D0 - 1.5 d)^2.5 (the mesh's share) = "
+               )
+            << (
+                   planar
+                 ? 1.03*sqrt(mag(g))*geometry.slotLength()*pow(D0 - k*d_, 1.5)
+                 : 0.58*sqrt(mag(g))*pow(D0 - k*d_, 2.5)
+                  *geometry.orificeArea()/geometry.fullOrificeArea()
+               )
+            << " m3/s of bulk" << endl;
+    }
 
     if (!pimple_.consistent())
     {
