@@ -314,9 +314,15 @@ void Foam::bulkFlowModels::muI::solveFlow()
           + fvc::interpolate(rho_*rAU)*fvc::ddtCorr(U_, phi_)
         );
 
+        if (p_rgh_.needReference())
+        {
+            adjustPhi(phiHbyA, U_, p_rgh_);
+        }
+
         // SIMPLEC (PIMPLE { consistent yes; }, as pimpleFoam's): where the
         // viscous coupling to the neighbours dominates the diagonal (a
-        // stagnant bulk, eta up to etaMax, 1e4-1e8 x rho/deltaT), the
+        // stagnant bulk, eta up to etaMax: eta deltaT / (rho dx^2) is 30-100
+        // on a silo's 2.5-5 mm cells, 3e4 on the inclined plane's), the
         // momentum predictor spreads every pressure error through the bulk
         // and PISO's correction with 1/A cannot take it back: the pressure
         // diverges within a few steps (interFoam does the same with a
@@ -338,11 +344,6 @@ void Foam::bulkFlowModels::muI::solveFlow()
             HbyA += (rAU - rAtU)*fvc::reconstruct(faceForce);
         }
         const surfaceScalarField rAtUf("rAtUf", fvc::interpolate(rAtU));
-
-        if (p_rgh_.needReference())
-        {
-            adjustPhi(phiHbyA, U_, p_rgh_);
-        }
 
         const surfaceScalarField phig(gravityFlux*rAtUf);
         phiHbyA += phig;

@@ -25,7 +25,11 @@ coulombWallFrictionFvPatchVectorField
     stickVelocity_(1e-6),
     pName_("p"),
     muEffName_("muEff")
-{}
+{
+    // The wall is at rest: partialSlip's (patch, field) constructor leaves
+    // refValue unset
+    refValue() = Zero;
+}
 
 
 Foam::coulombWallFrictionFvPatchVectorField::
@@ -57,8 +61,13 @@ coulombWallFrictionFvPatchVectorField
             << nl << exit(FatalIOError);
     }
 
-    // The wall sticks until the pressure and viscosity exist
-    valueFraction() = 1;
+    // The wall is at rest; it sticks until the pressure and viscosity exist,
+    // or slides as it did when the field was written (a restart)
+    refValue() = Zero;
+    valueFraction() =
+        dict.found("valueFraction")
+      ? scalarField("valueFraction", dict, p.size())
+      : scalarField(p.size(), 1.0);
     evaluate();
 }
 
@@ -126,11 +135,25 @@ void Foam::coulombWallFrictionFvPatchVectorField::updateCoeffs()
     }
 
     const objectRegistry& db = this->db();
+    const bool fieldsFound =
+        db.foundObject<volScalarField>(pName_)
+     && db.foundObject<volScalarField>(muEffName_);
     if
     (
-        db.foundObject<volScalarField>(pName_)
-     && db.foundObject<volScalarField>(muEffName_)
+        !fieldsFound
+     && db.time().timeIndex() > db.time().startTimeIndex()
     )
+    {
+        // Before the first step the bulk model may not have made them yet;
+        // later their absence is another bulk model or a misspelt name
+        FatalErrorInFunction
+            << "coulombWallFriction on patch " << patch().name() << " of "
+            << internalField().name() << " needs the fields '" << pName_
+            << "' and '" << muEffName_ << "' (bulkFlow muI provides p and"
+            << " muEff); found: " << db.sortedNames<volScalarField>()
+            << exit(FatalError);
+    }
+    if (fieldsFound)
     {
         const scalarField& pw =
             patch().lookupPatchField<volScalarField, scalar>(pName_);
@@ -166,6 +189,7 @@ void Foam::coulombWallFrictionFvPatchVectorField::write(Ostream& os) const
     os.writeEntry("stickVelocity", stickVelocity_);
     os.writeEntryIfDifferent<word>("p", "p", pName_);
     os.writeEntryIfDifferent<word>("muEff", "muEff", muEffName_);
+    valueFraction().writeEntry("valueFraction", os);
     writeEntry("value", os);
 }
 
