@@ -20,6 +20,8 @@ import math
 import os
 import sys
 
+from sdfoam.beverloo import fit as fitBeverloo, fitFixedK, maxWindowDeviation, timeMean
+
 work, results = sys.argv[1], sys.argv[2]
 g, rhoBulk, d = 9.81, 0.6 * 2500.0, 1.2e-3
 tStart, window = 0.3, 0.1
@@ -38,17 +40,6 @@ def outlet(name, depth):
     return [(float(r[0]), float(r[2]) / depth, (float(r[-2]) + float(r[-1])) / depth) for r in rows]
 
 
-def mean(series, t0, t1):
-    """Time-weighted mean of (t, w) on [t0, t1] (the solver's steps)."""
-    acc = span = 0.0
-    for (ta, wa), (tb, wb) in zip(series, series[1:]):
-        a, b = max(ta, t0), min(tb, t1)
-        if b > a:
-            acc += 0.5 * (wa + wb) * (b - a)
-            span += b - a
-    return acc / span if span > 0 else float("nan")
-
-
 rates = {}
 with open(results, "w") as out:
     out.write("# benchmarks/muIBeverloo: planar flat-bottomed bin, bulkFlow muI (validation/planarSiloMuI),\n")
@@ -61,9 +52,8 @@ with open(results, "w") as out:
         tEnd = series[-1][0]
         if name.startswith("empty"):
             tEnd = next((t for t, _, m in series if m > 0.6 * fill), tEnd)
-        W = mean(ts, tStart, tEnd)
-        edges = [tStart + i * window for i in range(int((tEnd - tStart) / window + 1e-9))]
-        dev = max(abs(mean(ts, a, a + window) / W - 1) for a in edges)
+        W = timeMean(ts, tStart, tEnd)
+        dev = maxWindowDeviation(ts, tStart, tEnd, window)
         massIn = [m for t, _, m in series if tStart <= t <= tEnd]
         frac = (massIn[-1] - massIn[0]) / fill
         rates[name] = (o, W, dev)
@@ -76,24 +66,9 @@ with open(results, "w") as out:
 
     fit = [(o["b"], W) for name, (o, W, _) in rates.items() if name.startswith("fit")]
 
-    def lsq(k):
-        xs = [math.log(b - k * d) for b, _ in fit]
-        ys = [math.log(W) for _, W in fit]
-        n = len(xs)
-        mx, my = sum(xs) / n, sum(ys) / n
-        sxx = sum((x - mx) ** 2 for x in xs)
-        slope = sum((x - mx) * (y - my) for x, y in zip(xs, ys)) / sxx
-        icept = my - slope * mx
-        res = sum((y - icept - slope * x) ** 2 for x, y in zip(xs, ys))
-        return res, slope, icept, sxx
-
-    best = min((lsq(k / 100.0) + (k / 100.0,) for k in range(0, 601) if min(b for b, _ in fit) > k / 100.0 * d),
-               key=lambda r: r[0])
-    res, n, icept, sxx, k = best
-    C = math.exp(icept) / (rhoBulk * math.sqrt(g))
-    res15, n15, icept15, sxx15 = lsq(1.5)
-    se15 = math.sqrt(res15 / (len(fit) - 2) / sxx15)
-    C15 = math.exp(icept15) / (rhoBulk * math.sqrt(g))
+    prefactor = rhoBulk * math.sqrt(g)
+    n, C, k, res = fitBeverloo(fit, d, prefactor, [k / 100.0 for k in range(0, 601)])
+    n15, se15, C15 = fitFixedK(fit, d, prefactor, 1.5)
     # C at n = 3/2 and k = 1.5 (the slot law's form)
     C32 = sum(W / (rhoBulk * math.sqrt(g) * (b - 1.5 * d) ** 1.5) for b, W in fit) / len(fit)
     out.write("# Beverloo fit over b = %s mm: n %.3f, C %.4f, k %.2f (residual %.2e in log W)\n"
