@@ -118,12 +118,12 @@ test_inclined_plane_mui()
     done
 }
 
-# muI's bad input: mu_s >= mu_d, a negative I_0, a negative d: each a fatal
-# error naming the entry, nothing written
+# muI's bad input: mu_s >= mu_d, a negative I_0, a negative d, an unknown
+# forces: each a fatal error naming the entry, nothing written
 test_mui_bad_input()
 {
     local dir="$workRoot/muIBadInput" entry value expect
-    for entry in "mu_s 0.7:'mu_d 0.643' must be > mu_s" "I_0 -0.1:'I_0 -0.1' must be > 0" "d -1e-3:'d -0.001' must be > 0"
+    for entry in "mu_s 0.7:'mu_d 0.643' must be > mu_s" "I_0 -0.1:'I_0 -0.1' must be > 0" "d -1e-3:'d -0.001' must be > 0" "forces cellCentred:Unknown 'forces cellCentred'; valid: (faceFlux cellGradient)"
     do
         value="${entry%%:*}"; expect="${entry#*:}"
         rm -rf "$dir"; mkdir -p "$dir"
@@ -352,6 +352,28 @@ print("fill 0.22 / 0.17 m: %.4f; Q30/Q20 %.4f against ((D0 - 1.5 d) ratio)^2.5 =
 ok = ok and abs(height - 1) < 0.02 and abs(ratio / law - 1) < 0.05
 sys.exit(0 if ok else 1)
 PY
+}
+
+# Mass flow or core flow from the rheology (validation/hopperFlowMuI, muI
+# with forces cellGradient and Coulomb walls of 20 degrees, 0.5 s): a
+# 20-degree cone discharges in mass flow (the wall cells move at more than
+# 0.05 of the axis's speed all along the lower cone; 0.36 at 1 s in the
+# study), a 50-degree one in core flow (0.0024); the fields bounded, no
+# non-finite value
+test_hopper_flow_pattern()
+{
+    local dir="$workRoot/hopperFlowPattern" theta
+    rm -rf "$dir"; mkdir -p "$dir"
+    for theta in 20 50
+    do
+        cp -r "$validationDir/hopperFlowMuI" "$dir/theta$theta"
+        "$dir/theta$theta/Allrun" -angle "$theta" -wallFriction 20 -endTime 0.5 > "$dir/log.theta$theta" 2>&1 \
+            || { tail -20 "$dir/log.theta$theta"; return 1; }
+        grep "^hopper $theta deg" "$dir/log.theta$theta"
+        python3 -m sdfoam.fieldStats "$dir/theta$theta" bounds --tol 1e-6 || return 1
+    done
+    grep -q "^hopper 20 deg: mass flow" "$dir/log.theta20" || { echo "20 degrees: not mass flow"; return 1; }
+    grep -q "^hopper 50 deg: core flow" "$dir/log.theta50" || { echo "50 degrees: not core flow"; return 1; }
 }
 
 # mu(I) silo extremes on the planar bin (5 mm cells, 0.5 s): an empty bin

@@ -263,6 +263,19 @@ void Foam::bulkFlowModels::muI::updateViscosity()
 }
 
 
+Foam::tmp<Foam::volVectorField>
+Foam::bulkFlowModels::muI::cellForce() const
+{
+    // -grad(p_rgh) - gh grad(rho), and the periodic gravity rho g_p: the
+    // cell-centred counterpart of the face force
+    // gravityFlux - snGrad(p_rgh) magSf
+    return
+        dimensionedVector("gp", dimAcceleration, gPeriodic_)*rho_
+      - fvc::grad(p_rgh_)
+      - gh_*fvc::grad(rho_);
+}
+
+
 void Foam::bulkFlowModels::muI::solveFlow()
 {
     const fvMesh& mesh = mixture_.mesh();
@@ -295,9 +308,14 @@ void Foam::bulkFlowModels::muI::solveFlow()
         solve
         (
             UEqn
-         == fvc::reconstruct
+         ==
             (
-                gravityFlux - fvc::snGrad(p_rgh_)*mesh.magSf()
+                cellGradientForces_
+              ? cellForce()
+              : fvc::reconstruct
+                (
+                    gravityFlux - fvc::snGrad(p_rgh_)*mesh.magSf()
+                )
             )
         );
     }
@@ -341,7 +359,13 @@ void Foam::bulkFlowModels::muI::solveFlow()
                 gravityFlux - fvc::snGrad(p_rgh_)*mesh.magSf()
             );
             phiHbyA += (rAUf - fvc::interpolate(rAtU))*faceForce;
-            HbyA += (rAU - rAtU)*fvc::reconstruct(faceForce);
+            HbyA +=
+                (rAU - rAtU)
+               *(
+                    cellGradientForces_
+                  ? cellForce()
+                  : fvc::reconstruct(faceForce)
+                );
         }
         const surfaceScalarField rAtUf("rAtUf", fvc::interpolate(rAtU));
 
@@ -363,7 +387,15 @@ void Foam::bulkFlowModels::muI::solveFlow()
             {
                 phi_ = phiHbyA - p_rghEqn.flux();
                 p_rgh_.relax();
-                U_ = HbyA + rAtU*fvc::reconstruct((phig - p_rghEqn.flux())/rAtUf);
+                if (cellGradientForces_)
+                {
+                    U_ = HbyA + rAtU*cellForce();
+                }
+                else
+                {
+                    U_ = HbyA
+                      + rAtU*fvc::reconstruct((phig - p_rghEqn.flux())/rAtUf);
+                }
                 U_.correctBoundaryConditions();
             }
         }
@@ -406,7 +438,7 @@ Foam::bulkFlowModels::muI::muI
             {
                 "mu_s", "mu_d", "I_0", "regularised", "d", "rhoS",
                 "packedFraction", "etaMax", "pMin", "rhoAir", "muAir",
-                "outletPatches"
+                "outletPatches", "forces"
             }
         ),
         mixture,
@@ -492,6 +524,7 @@ Foam::bulkFlowModels::muI::muI
         dimensionedScalar("gh", dimAcceleration*dimLength, Zero)
     ),
     gPeriodic_(Zero),
+    cellGradientForces_(false),
     pRefCell_(0),
     pRefValue_(0)
 {
@@ -527,6 +560,16 @@ Foam::bulkFlowModels::muI::muI
             << "'packedFraction " << packedFraction_ << "' must lie in"
             << " (0, 1]" << nl << exit(FatalIOError);
     }
+
+    // Optional, default faceFlux (interFoam's)
+    const word forces(coeffs_.getOrDefault<word>("forces", "faceFlux"));
+    if (forces != "faceFlux" && forces != "cellGradient")
+    {
+        FatalIOErrorInFunction(coeffs_)
+            << "Unknown 'forces " << forces << "'; valid: (faceFlux"
+            << " cellGradient)" << nl << exit(FatalIOError);
+    }
+    cellGradientForces_ = (forces == "cellGradient");
 
     // Gravity along translational cyclic directions drives as a body force.
     // The directions come from every cyclic and processorCyclic patch with
