@@ -570,6 +570,9 @@ Foam::bulkFlowModels::muI::muI
             << " cellGradient)" << nl << exit(FatalIOError);
     }
     cellGradientForces_ = (forces == "cellGradient");
+    Info<< "    muI: forces " << forces
+        << (cellGradientForces_ ? " (cell gradients)" : " (reconstructed face forces)")
+        << nl;
 
     // Gravity along translational cyclic directions drives as a body force.
     // The directions come from every cyclic and processorCyclic patch with
