@@ -119,11 +119,12 @@ test_inclined_plane_mui()
 }
 
 # muI's bad input: mu_s >= mu_d, a negative I_0, a negative d, an unknown
-# forces: each a fatal error naming the entry, nothing written
+# forces, etaMax, pMin, rhoAir, muAir not > 0, packedFraction above 1: each
+# a fatal error naming the entry, nothing written
 test_mui_bad_input()
 {
     local dir="$workRoot/muIBadInput" entry value expect
-    for entry in "mu_s 0.7:'mu_d 0.643' must be > mu_s" "I_0 -0.1:'I_0 -0.1' must be > 0" "d -1e-3:'d -0.001' must be > 0" "forces cellCentred:Unknown 'forces cellCentred'; valid: (faceFlux cellGradient)"
+    for entry in "mu_s 0.7:'mu_d 0.643' must be > mu_s" "I_0 -0.1:'I_0 -0.1' must be > 0" "d -1e-3:'d -0.001' must be > 0" "forces cellCentred:Unknown 'forces cellCentred'; valid: (faceFlux cellGradient)" "etaMax -1:'etaMax -1' must be > 0" "pMin 0:'pMin 0' must be > 0" "rhoAir -1.2:'rhoAir -1.2' must be > 0" "muAir 0:'muAir 0' must be > 0" "packedFraction 1.2:'packedFraction 1.2' must lie in (0, 1]"
     do
         value="${entry%%:*}"; expect="${entry#*:}"
         rm -rf "$dir"; mkdir -p "$dir"

@@ -9,7 +9,9 @@ through the orifice of the 5-degree wedge: x 72 for the full bin) and the
 run's Allrun options (WORK/runs.txt); writes RESULTS, WORK/<run>.rate (t,
 mass flow of the full bin, discharged fraction) and WORK/fit.dat.
 
-Rate: the time-weighted mean mass flow over [0.3 s, end]. Constancy: the
+Rate: the time-weighted mean mass flow over [0.3 s, end] (`empty`: until
+55 % of the fill has left: the rate falls from 57 %, when the crater
+reaches the orifice and the flat bottom's shoulders hold the rest). Constancy: the
 largest deviation of a 0.1 s mean from it. Fit: Q = rho_b C sqrt(g)
 (D0 - k d)^n over the `fit` runs (2.5 mm cells) (rho_b = 0.6 x 2500 kg/m3, d = 1 mm): k on
 a grid of 0.01 d (0-6) and n, C by least squares in log Q; and with k = 1.5
@@ -59,6 +61,8 @@ with open(results, "w") as out:
         ts = [(t, w) for t, w, _ in series]
         fill = o["hFill"] * math.pi * R ** 2 * rhoBulk
         tEnd = series[-1][0]
+        if name.startswith("empty"):
+            tEnd = next((t for t, _, m in series if m > 0.55 * fill), tEnd)
         Q = timeMean(ts, tStart, tEnd)
         dev = maxWindowDeviation(ts, tStart, tEnd, window)
         massIn = [m for t, _, m in series if tStart <= t <= tEnd]
@@ -83,6 +87,8 @@ with open(results, "w") as out:
     out.write("# with n = 5/2, k = 1.5: C %.4f (Beverloo C = 0.58)\n" % C52)
     out.write("# height_D20 / fit_D20 (fill height 0.22 / 0.17 m): %.4f\n"
               % (rates["height_D20"][1] / rates["fit_D20"][1]))
+    out.write("# empty_D25 / fit_D25 (until 55 %% discharged / over 0.3-1 s): %.4f\n"
+              % (rates["empty_D25"][1] / rates["fit_D25"][1]))
     out.write("# coarse_D20 / fit_D20 (5 / 2.5 mm cells): %.4f\n"
               % (rates["coarse_D20"][1] / rates["fit_D20"][1]))
     for D in (20, 30):

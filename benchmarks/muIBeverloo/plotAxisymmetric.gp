@@ -4,8 +4,9 @@ set output out
 set multiplot layout 1,2
 set title "mass flow through the orifice (muI, axisymmetric bin, full 360 deg)"
 set xlabel "t [s]"; set ylabel "Q [kg/s]"
+set xrange [0:3.2]
 set key top right
-plot for [r in "fit_D15 fit_D20 fit_D25 fit_D30 coarse_D20 fine_D20 fine_D30 height_D20"] \
+plot for [r in "fit_D15 fit_D20 fit_D25 fit_D30 coarse_D20 fine_D20 fine_D30 height_D20 empty_D25"] \
      work."/".r.".rate" u 1:2 w l t r
 set title "Beverloo: Q against the orifice diameter"
 set xlabel "D0 [mm]"; set ylabel "Q [kg/s]"

@@ -122,6 +122,31 @@ test_kinematic_unread_entry()
     echo "clear fatal error naming Q, nothing written"
 }
 
+# kinematic's optional entries out of range: a negative surfaceLayer, a
+# packedFraction above 1, an unknown geometry; each a FatalIOError naming
+# the entry (and the valid kinds), nothing written
+test_kinematic_bad_input()
+{
+    local dir="$workRoot/kinematicBadInput" entry value expect
+    for entry in "surfaceLayer:-0.1:'surfaceLayer -0.1' must be > 0" "packedFraction:1.5:'packedFraction 1.5' must lie in (0, 1]" "geometry:cone:Unknown geometry 'cone'; valid: "
+    do
+        local key="${entry%%:*}" rest="${entry#*:}"
+        value="${rest%%:*}"; expect="${rest#*:}"
+        silo2D_case "$dir" || return 1
+        foamDictionary -entry "bulkFlow/kinematicCoeffs/$key" -add "$value" "$dir/constant/granularProperties" > /dev/null || return 1
+        if segregationDegradationFoam -case "$dir" > "$dir/log.solver" 2>&1
+        then
+            echo "$key $value accepted"; return 1
+        fi
+        grep -qF "$expect" "$dir/log.solver" || { echo "$key $value: message lacks \"$expect\""; sed -n '/FOAM FATAL/,/FOAM exiting/p' "$dir/log.solver" | head -8; return 1; }
+        grep -q "FOAM FATAL IO ERROR" "$dir/log.solver" || { echo "$key $value: not a FatalIOError"; return 1; }
+        local written
+        written=$(find "$dir" -mindepth 1 -maxdepth 1 -type d -regextype posix-extended -regex '.*/[0-9.eE+-]+' ! -name 0 | head -1)
+        [ -z "$written" ] || { echo "$key $value: a time directory was written: $written"; return 1; }
+        echo "$key $value: refused: $(grep -m1 -oF "$expect" "$dir/log.solver")"
+    done
+}
+
 # The outletComposition function object: re-run with -postProcess it keeps
 # the run's outlet.dat byte for byte and writes its own file beside it; a
 # 'patches' entry that matches no patch is a fatal error naming the entry
