@@ -263,6 +263,17 @@ sys.exit(0 if dU < 1e-4 and worst["alpha.granular"] < 1e-3 and worst["n.grain"] 
 PY
 }
 
+# run_case_copy CASE DIR NAME [ARGS...]: a fresh copy of validation/CASE as
+# DIR/NAME, run by its Allrun with ARGS; the log is DIR/log.NAME, its tail
+# printed when the Allrun fails
+run_case_copy()
+{
+    local case="$1" dir="$2" name="$3"; shift 3
+    rm -rf "${dir:?}/$name"
+    cp -r "$validationDir/$case" "$dir/$name"
+    "$dir/$name/Allrun" "$@" > "$dir/log.$name" 2>&1 || { tail -20 "$dir/log.$name"; return 1; }
+}
+
 # Beverloo from the rheology, small (validation/planarSiloMuI on 5 mm
 # cells, bin 0.16 m wide; benchmarks/muIBeverloo has the fit on 2.5 mm
 # cells): the mass flow through a 20 mm slot is constant within 2 % over
@@ -280,9 +291,7 @@ test_mui_beverloo()
         # shellcheck disable=SC2086
         set -- $run
         local name="$1"; shift
-        cp -r "$validationDir/planarSiloMuI" "$dir/$name"
-        "$dir/$name/Allrun" -W 0.16 -H 0.46 -dx 5e-3 -endTime 0.8 "$@" > "$dir/log.$name" 2>&1 \
-            || { tail -20 "$dir/log.$name"; return 1; }
+        run_case_copy planarSiloMuI "$dir" "$name" -W 0.16 -H 0.46 -dx 5e-3 -endTime 0.8 "$@" || return 1
     done
     python3 - "$dir" <<'PY'
 import math, sys
@@ -319,9 +328,7 @@ test_mui_beverloo_axisymmetric()
         # shellcheck disable=SC2086
         set -- $run
         local name="$1"; shift
-        cp -r "$validationDir/axisymmetricSiloMuI" "$dir/$name"
-        "$dir/$name/Allrun" -dx 2.5e-3 -endTime 0.8 "$@" > "$dir/log.$name" 2>&1 \
-            || { tail -20 "$dir/log.$name"; return 1; }
+        run_case_copy axisymmetricSiloMuI "$dir" "$name" -dx 2.5e-3 -endTime 0.8 "$@" || return 1
     done
     python3 - "$dir" <<'PY'
 import math, re, sys
@@ -367,9 +374,7 @@ test_hopper_flow_pattern()
     rm -rf "$dir"; mkdir -p "$dir"
     for theta in 20 50
     do
-        cp -r "$validationDir/hopperFlowMuI" "$dir/theta$theta"
-        "$dir/theta$theta/Allrun" -angle "$theta" -wallFriction 20 -endTime 0.5 > "$dir/log.theta$theta" 2>&1 \
-            || { tail -20 "$dir/log.theta$theta"; return 1; }
+        run_case_copy hopperFlowMuI "$dir" "theta$theta" -angle "$theta" -wallFriction 20 -endTime 0.5 || return 1
         grep "^hopper $theta deg" "$dir/log.theta$theta"
         python3 -m sdfoam.fieldStats "$dir/theta$theta" bounds --tol 1e-6 || return 1
     done
@@ -389,11 +394,9 @@ test_hopper_parallel()
     rm -rf "$dir"; mkdir -p "$dir"
     for mode in serial parallel
     do
-        cp -r "$validationDir/hopperFlowMuI" "$dir/$mode"
         local opt=; [ "$mode" = parallel ] && opt=-parallel
         # shellcheck disable=SC2086
-        "$dir/$mode/Allrun" -angle 20 -wallFriction 20 -endTime 0.5 $opt > "$dir/log.$mode" 2>&1 \
-            || { tail -20 "$dir/log.$mode"; return 1; }
+        run_case_copy hopperFlowMuI "$dir" "$mode" -angle 20 -wallFriction 20 -endTime 0.5 $opt || return 1
     done
     python3 -m sdfoam.fieldStats "$dir/parallel" bounds --tol 1e-6 || return 1
     python3 - "$dir" <<'PY'
@@ -435,8 +438,7 @@ test_mui_silo_extremes()
         # shellcheck disable=SC2086
         set -- $run
         name="$1"; shift
-        cp -r "$validationDir/planarSiloMuI" "$dir/$name"
-        "$dir/$name/Allrun" -dx 5e-3 "$@" > "$dir/log.$name" 2>&1 || { tail -20 "$dir/log.$name"; return 1; }
+        run_case_copy planarSiloMuI "$dir" "$name" -dx 5e-3 "$@" || return 1
         python3 -m sdfoam.fieldStats "$dir/$name" bounds --tol 1e-8 || return 1
     done
     python3 - "$dir" <<'PY' || return 1

@@ -20,25 +20,13 @@ import math
 import os
 import sys
 
-from sdfoam.beverloo import fit as fitBeverloo, fitFixedK, maxWindowDeviation, timeMean
+from sdfoam.beverloo import fit as fitBeverloo, fitFixedK, measure, outletSeries, readRuns, writeRateFile
 
 work, results = sys.argv[1], sys.argv[2]
 g, rhoBulk, d = 9.81, 0.6 * 2500.0, 1.2e-3
 tStart, window = 0.3, 0.1
 
-runs = []
-for line in open(os.path.join(work, "runs.txt")):
-    if line.strip():
-        name, *opts = line.split()
-        o = dict(zip(opts[::2], opts[1::2]))
-        runs.append((name, {k.lstrip("-"): float(v) for k, v in o.items()}))
-
-
-def outlet(name, depth):
-    rows = [l.split() for l in open(os.path.join(work, name, "postProcessing", "outletComposition", "0", "outlet.dat"))
-            if not l.startswith("#")]
-    return [(float(r[0]), float(r[2]) / depth, (float(r[-2]) + float(r[-1])) / depth) for r in rows]
-
+runs = readRuns(work)
 
 rates = {}
 with open(results, "w") as out:
@@ -46,23 +34,14 @@ with open(results, "w") as out:
     out.write("# mass flow per metre of slot W [kg/s/m]; rho_b %.0f kg/m3, d %.1f mm\n" % (rhoBulk, d * 1e3))
     out.write("# run b[mm] dx[mm] hFill[m] W[kg/s/m] window[s] constancy(max 0.1s dev) discharged_in_window\n")
     for name, o in runs:
-        series = outlet(name, o["dx"])
-        ts = [(t, w) for t, w, _ in series]
+        series = outletSeries(os.path.join(work, name), scale=1 / o["dx"])
         fill = o["hFill"] * o["W"] * rhoBulk
-        tEnd = series[-1][0]
-        if name.startswith("empty"):
-            tEnd = next((t for t, _, m in series if m > 0.6 * fill), tEnd)
-        W = timeMean(ts, tStart, tEnd)
-        dev = maxWindowDeviation(ts, tStart, tEnd, window)
-        massIn = [m for t, _, m in series if tStart <= t <= tEnd]
-        frac = (massIn[-1] - massIn[0]) / fill
+        tEnd, W, dev, frac = measure(series, fill, tStart, window,
+                                     0.6 if name.startswith("empty") else None)
         rates[name] = (o, W, dev)
         out.write("%-11s %5.1f %4.1f %5.2f %9.4f %4.2f-%4.2f %.2e %.3f\n"
                   % (name, o["b"] * 1e3, o["dx"] * 1e3, o["hFill"], W, tStart, tEnd, dev, frac))
-        with open(os.path.join(work, name + ".rate"), "w") as f:
-            f.write("# t[s] W[kg/s/m] discharged_fraction\n")
-            for t, w, m in series:
-                f.write("%.5f %.6f %.5f\n" % (t, w, m / fill))
+        writeRateFile(os.path.join(work, name + ".rate"), series, fill, "W[kg/s/m]")
 
     fit = [(o["b"], W) for name, (o, W, _) in rates.items() if name.startswith("fit")]
 

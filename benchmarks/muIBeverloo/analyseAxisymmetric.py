@@ -21,34 +21,14 @@ import math
 import os
 import sys
 
-from sdfoam.beverloo import fit as fitBeverloo, fitFixedK, maxWindowDeviation, timeMean
+from sdfoam.beverloo import fit as fitBeverloo, fitFixedK, measure, outletSeries, readRuns, writeRateFile
 
 work, results = sys.argv[1], sys.argv[2]
 g, rhoBulk, d, R = 9.81, 0.6 * 2500.0, 1.0e-3, 0.04
 wedges = 360.0 / 5.0
 tStart, window = 0.3, 0.1
 
-runs = []
-for line in open(os.path.join(work, "runs.txt")):
-    if line.strip():
-        name, *opts = line.split()
-        o = dict(zip(opts[::2], opts[1::2]))
-        runs.append((name, {k.lstrip("-"): float(v) for k, v in o.items()}))
-
-
-def outlet(name):
-    """(t, mass flow of the full bin, cumulative mass out of the full bin)."""
-    rows = [l.split() for l in open(os.path.join(work, name, "postProcessing", "outletComposition", "0", "outlet.dat"))
-            if not l.startswith("#")]
-    return [(float(r[0]), wedges * float(r[2]), wedges * float(r[-1])) for r in rows]
-
-
-def topOutflow(name):
-    """Cumulative solids mass out of the open top (full bin)."""
-    rows = [l.split() for l in open(os.path.join(work, name, "postProcessing", "outletComposition", "0", "atmosphere.dat"))
-            if not l.startswith("#")]
-    return wedges * float(rows[-1][-1])
-
+runs = readRuns(work)
 
 rates = {}
 with open(results, "w") as out:
@@ -57,24 +37,15 @@ with open(results, "w") as out:
               % (rhoBulk, d * 1e3))
     out.write("# run D0[mm] dx[mm] hFill[m] Q[kg/s] window[s] constancy(max 0.1s dev) discharged_in_window out_of_top/out_of_orifice\n")
     for name, o in runs:
-        series = outlet(name)
-        ts = [(t, w) for t, w, _ in series]
+        series = outletSeries(os.path.join(work, name), scale=wedges)
         fill = o["hFill"] * math.pi * R ** 2 * rhoBulk
-        tEnd = series[-1][0]
-        if name.startswith("empty"):
-            tEnd = next((t for t, _, m in series if m > 0.55 * fill), tEnd)
-        Q = timeMean(ts, tStart, tEnd)
-        dev = maxWindowDeviation(ts, tStart, tEnd, window)
-        massIn = [m for t, _, m in series if tStart <= t <= tEnd]
-        frac = (massIn[-1] - massIn[0]) / fill
-        top = topOutflow(name) / series[-1][2]
+        tEnd, Q, dev, frac = measure(series, fill, tStart, window,
+                                     0.55 if name.startswith("empty") else None)
+        top = outletSeries(os.path.join(work, name), "atmosphere", wedges)[-1][2] / series[-1][2]
         rates[name] = (o, Q, dev)
         out.write("%-11s %5.1f %4.1f %5.2f %9.5f %4.2f-%4.2f %.2e %.3f %.1e\n"
                   % (name, o["D0"] * 1e3, o["dx"] * 1e3, o["hFill"], Q, tStart, tEnd, dev, frac, top))
-        with open(os.path.join(work, name + ".rate"), "w") as f:
-            f.write("# t[s] Q[kg/s] discharged_fraction\n")
-            for t, w, m in series:
-                f.write("%.5f %.6f %.5f\n" % (t, w, m / fill))
+        writeRateFile(os.path.join(work, name + ".rate"), series, fill, "Q[kg/s]")
 
     fit = [(o["D0"], Q) for name, (o, Q, _) in rates.items() if name.startswith("fit")]
     prefactor = rhoBulk * math.sqrt(g)

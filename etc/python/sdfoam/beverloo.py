@@ -1,6 +1,17 @@
 """Discharge rates from an outlet record and the Beverloo fit
 (benchmarks/muIBeverloo: the planar and the axisymmetric bin).
 
+    readRuns(work)               (name, {option: value}) from WORK/runs.txt
+                                 (a run's name, then its Allrun options)
+    outletSeries(case, patch, scale)
+                                 (t, mass flow, cumulative mass) through a
+                                 patch (outletComposition), times scale
+    measure(series, fill, t0, window, untilFraction)
+                                 the rate over [t0, end] (or until that
+                                 fraction of the fill has left), its
+                                 constancy and the fraction discharged
+    writeRateFile(path, series, fill, rateLabel)
+                                 t, rate and discharged fraction as text
     timeMean(series, t0, t1)     time-weighted mean of (t, w) on [t0, t1]
     maxWindowDeviation(series, t0, t1, window)
                                  largest |mean over a window / mean - 1|
@@ -13,6 +24,57 @@
                                  error of n
 """
 import math
+import os
+
+
+def readRuns(work):
+    """[(name, {option without '-': float})] from WORK/runs.txt."""
+    runs = []
+    for line in open(os.path.join(work, "runs.txt")):
+        if line.strip():
+            name, *opts = line.split()
+            o = dict(zip(opts[::2], opts[1::2]))
+            runs.append((name, {k.lstrip("-"): float(v) for k, v in o.items()}))
+    return runs
+
+
+def outletSeries(case, patch="outlet", scale=1.0):
+    """[(t, mass flow, cumulative mass)] through the patch, from
+    postProcessing/outletComposition/0/<patch>.dat (columns: time, Q, mass
+    flow, then per species its mass flow, its mass fraction and, last, its
+    cumulative mass), each mass times scale (e.g. 72 for a 5-degree
+    wedge, 1/depth for a slab)."""
+    rows = [l.split() for l in open(os.path.join(case, "postProcessing", "outletComposition", "0",
+                                                 patch + ".dat"))
+            if not l.startswith("#")]
+    series = []
+    for r in rows:
+        nSpecies = (len(r) - 3) // 3
+        series.append((float(r[0]), scale * float(r[2]),
+                       scale * sum(float(x) for x in r[len(r) - nSpecies:])))
+    return series
+
+
+def measure(series, fill, t0, window, untilFraction=None):
+    """(tEnd, rate, constancy, fraction discharged) of an outletSeries over
+    [t0, tEnd]: tEnd the end of the record or, with untilFraction, the time
+    that fraction of the fill (same mass units) has left; the rate its
+    time-weighted mean, the constancy maxWindowDeviation."""
+    ts = [(t, w) for t, w, _ in series]
+    tEnd = series[-1][0]
+    if untilFraction is not None:
+        tEnd = next((t for t, _, m in series if m > untilFraction * fill), tEnd)
+    massIn = [m for t, _, m in series if t0 <= t <= tEnd]
+    return (tEnd, timeMean(ts, t0, tEnd), maxWindowDeviation(ts, t0, tEnd, window),
+            (massIn[-1] - massIn[0]) / fill)
+
+
+def writeRateFile(path, series, fill, rateLabel):
+    """The series as text: t, rate, discharged fraction of the fill."""
+    with open(path, "w") as f:
+        f.write("# t[s] %s discharged_fraction\n" % rateLabel)
+        for t, w, m in series:
+            f.write("%.5f %.6f %.5f\n" % (t, w, m / fill))
 
 
 def timeMean(series, t0, t1):
