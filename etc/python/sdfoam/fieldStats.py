@@ -9,6 +9,14 @@
     changed --tol T        some n.* changed by more than T
     emptied                some cell full at t=0 (phi > 0.5) is empty
                            (< 1e-3) at the end
+    inBulk --packed P [--tol 1e-8] [--uniform X]
+                           sum_i n.i = P alpha.granular in every cell at
+                           every written time (the species live in the
+                           bulk of a free-surface flow, bulkFlow muI), and
+                           with --uniform X the first species' share of
+                           the solids is X (within 1e-6) wherever alpha >
+                           1e-3 (a uniform fill advected without
+                           segregation)
 """
 import math
 import os
@@ -96,6 +104,29 @@ def emptied(case):
         fail("no cell emptied")
 
 
+def inBulk(case, packed, tol, uniform=None):
+    times = foamcase.timeDirs(case, includeZero=True)
+    worst = 0.0
+    worstShare = 0.0
+    for t in times:
+        names = species(case, t)
+        alpha = foamcase.readScalarField(case, t, "alpha.granular")
+        fields = [foamcase.readScalarField(case, t, n) for n in names]
+        for i, (a, *ns) in enumerate(zip(alpha, *fields)):
+            worst = max(worst, abs(sum(ns) - packed*a))
+            if uniform is not None and a > 1e-3:
+                worstShare = max(worstShare, abs(ns[0]/sum(ns) - uniform))
+    print("sum of %s - %g alpha.granular: largest %.3e over %d times (tol %.1e)"
+          % ("+".join(species(case, times[-1])), packed, worst, len(times), tol))
+    if worst > tol:
+        fail("species outside the bulk")
+    if uniform is not None:
+        print("share of %s where alpha > 1e-3: largest deviation from %g %.3e (tol 1e-6)"
+              % (species(case, times[-1])[0], uniform, worstShare))
+        if worstShare > 1e-6:
+            fail("the composition of a uniform fill changed")
+
+
 if __name__ == "__main__":
     case, what = sys.argv[1], sys.argv[2]
     args = sys.argv[3:]
@@ -108,5 +139,8 @@ if __name__ == "__main__":
         changed(case, tol)
     elif what == "emptied":
         emptied(case)
+    elif what == "inBulk":
+        uniform = float(args[args.index("--uniform") + 1]) if "--uniform" in args else None
+        inBulk(case, float(args[args.index("--packed") + 1]), tol, uniform)
     else:
         fail("unknown check " + what)

@@ -10,6 +10,10 @@
 #include "fvm.H"
 #include "gaussConvectionScheme.H"
 #include "limitedSurfaceInterpolationScheme.H"
+#include "fvmLaplacian.H"
+#include "fixedValueFvPatchFields.H"
+#include "zeroGradientFvPatchFields.H"
+#include "mixedFvPatchFields.H"
 
 namespace Foam
 {
@@ -18,14 +22,38 @@ namespace Foam
 
 const Foam::word Foam::speciesAdvection::schemeName_("div(phi,n)");
 
-
-Foam::speciesAdvection::speciesAdvection(const granularMixture& mixture)
-:
-    mixture_(mixture)
-{}
+const Foam::scalar Foam::speciesAdvection::emptyWeight_ = 1e-9;
 
 
-void Foam::speciesAdvection::correct(const surfaceScalarField& phi)
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+void Foam::speciesAdvection::checkDdtSchemes() const
+{
+    const fvMesh& mesh = mixture_.mesh();
+    for (const volScalarField& n : mixture_.n())
+    {
+        const word ddtName("ddt(" + n.name() + ")");
+        ITstream& is = mesh.ddtScheme(ddtName);
+        const word scheme(is);
+        if (scheme != "Euler")
+        {
+            FatalIOErrorInFunction(mesh.schemesDict())
+                << "ddtSchemes: '" << ddtName << "' is " << scheme
+                << "; with a free surface (bulk flow "
+                << "with a bulk fraction, e.g. muI) the species must use "
+                << "Euler, as alpha's MULES step does, so that their sum "
+                << "stays packedFraction alpha" << nl
+                << exit(FatalIOError);
+        }
+    }
+}
+
+
+void Foam::speciesAdvection::correctWeights
+(
+    const surfaceScalarField& faceFlux,
+    const bool freeSurface
+)
 {
     weights_.clear();
 
@@ -35,28 +63,59 @@ void Foam::speciesAdvection::correct(const surfaceScalarField& phi)
         fv::convectionScheme<scalar>::New
         (
             mesh,
-            phi,
+            faceFlux,
             mesh.divScheme(schemeName_)
         )
     );
 
     const auto* gauss =
         dynamic_cast<const fv::gaussConvectionScheme<scalar>*>(&tscheme());
+    const PtrList<volScalarField>& n = mixture_.n();
+
+    if (freeSurface && (!gauss || gauss->interpScheme().corrected()))
+    {
+        FatalIOErrorInFunction(mesh.schemesDict())
+            << "divSchemes: '" << schemeName_ << "' is "
+            << tscheme().type()
+            << (gauss ? word(" " + gauss->interpScheme().type()) : word::null)
+            << "; with a free surface the species need Gauss with weights"
+            << " and no explicit correction: upwind, linear or a limited"
+            << " scheme (vanLeer01, limitedLinear01, vanLeer, ...)" << nl
+            << exit(FatalIOError);
+    }
     if (!gauss)
     {
         return;
     }
+
     const auto* limited =
         dynamic_cast<const limitedSurfaceInterpolationScheme<scalar>*>
         (
             &gauss->interpScheme()
         );
-    if (!limited || mixture_.size() < 2)
+
+    if (!limited)
+    {
+        // Field-independent weights: OpenFOAM's path, or the same weights
+        // kept for the bulk fraction's interpolation
+        if (freeSurface)
+        {
+            weights_.reset
+            (
+                new surfaceScalarField
+                (
+                    "speciesAdvectionWeights",
+                    gauss->interpScheme().weights(n[0])
+                )
+            );
+        }
+        return;
+    }
+    if (n.size() < 2 && !freeSurface)
     {
         return;
     }
 
-    const PtrList<volScalarField>& n = mixture_.n();
     tmp<surfaceScalarField> tlimiter(limited->limiter(n[0]));
     for (label k = 1; k < n.size(); ++k)
     {
@@ -81,12 +140,262 @@ void Foam::speciesAdvection::correct(const surfaceScalarField& phi)
 }
 
 
+void Foam::speciesAdvection::checkInitialSum() const
+{
+    const volScalarField& alpha = *bulkFlow_.bulkFraction();
+    const scalar packed = bulkFlow_.packedFraction();
+    scalarField sum(alpha.primitiveField().size(), Zero);
+    for (const volScalarField& n : mixture_.n())
+    {
+        sum += n.primitiveField();
+    }
+    const scalar mismatch =
+        gMax(mag(sum - packed*alpha.primitiveField()));
+    if (mismatch > 1e-4*packed)
+    {
+        FatalIOError
+        (
+            FUNCTION_NAME, __FILE__, __LINE__,
+            alpha.objectPath()
+        )   << "The species' sum " << mixture_.names()
+            << " differs from packedFraction " << packed << " x "
+            << alpha.name() << " by up to " << mismatch
+            << " (more than 1e-4 packedFraction): with a free surface the"
+            << " species live in the bulk; set n.<species> and "
+            << alpha.name() << " together (e.g. setFields), with"
+            << " sum_i n_i = packedFraction " << alpha.name() << nl
+            << exit(FatalIOError);
+    }
+}
+
+
+void Foam::speciesAdvection::correctCompositions()
+{
+    // Round-off may leave traces of either sign in cells the bulk has left:
+    // the compositions are those of the non-negative parts, so that they
+    // stay in [0, 1] and sum to 1 in every cell
+    const PtrList<volScalarField>& n = mixture_.n();
+    const scalarField& V = mixture_.mesh().V().field();
+
+    scalarField sum(n[0].primitiveField().size(), Zero);
+    for (const volScalarField& nk : n)
+    {
+        sum += max(nk.primitiveField(), scalar(0));
+    }
+
+    // Cells without solids take the mean composition of the solids in the
+    // domain (a species absent everywhere stays absent)
+    const scalar total = gSum(sum*V);
+
+    scalarList mean(n.size());
+    forAll(n, k)
+    {
+        scalarField& c = composition_[k].primitiveFieldRef();
+        const scalarField nk(max(n[k].primitiveField(), scalar(0)));
+        mean[k] = total > VSMALL ? gSum(nk*V)/total : 1.0/n.size();
+        forAll(c, celli)
+        {
+            c[celli] = sum[celli] > VSMALL ? nk[celli]/sum[celli] : mean[k];
+        }
+    }
+
+    // Fixed values on the patches where n fixes its value (an inflow)
+    forAll(n[0].boundaryField(), patchi)
+    {
+        if (!composition_[0].boundaryField()[patchi].fixesValue())
+        {
+            continue;
+        }
+        scalarField sumb(n[0].boundaryField()[patchi].size(), Zero);
+        for (const volScalarField& nk : n)
+        {
+            sumb += nk.boundaryField()[patchi];
+        }
+        forAll(n, k)
+        {
+            const fvPatchScalarField& nb = n[k].boundaryField()[patchi];
+            fvPatchScalarField& cb = composition_[k].boundaryFieldRef()[patchi];
+            forAll(cb, facei)
+            {
+                cb[facei] =
+                    sumb[facei] > VSMALL ? nb[facei]/sumb[facei] : mean[k];
+            }
+        }
+    }
+
+    for (volScalarField& c : composition_)
+    {
+        c.correctBoundaryConditions();
+    }
+}
+
+
+Foam::tmp<Foam::scalarField> Foam::speciesAdvection::bulkSolids() const
+{
+    return
+        bulkFlow_.packedFraction()
+       *bulkFlow_.bulkFraction()->primitiveField();
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::speciesAdvection::speciesAdvection
+(
+    const granularMixture& mixture,
+    const bulkFlowModel& bulkFlow
+)
+:
+    mixture_(mixture),
+    bulkFlow_(bulkFlow)
+{
+    if (!freeSurface())
+    {
+        return;
+    }
+
+    checkDdtSchemes();
+    checkInitialSum();
+
+    // The compositions take the coupled and constraint conditions of the
+    // species, a fixed value where the species fix theirs (an inflow), and
+    // zero gradient on the other patches (outflow with the cell's
+    // composition; walls)
+    const fvMesh& mesh = mixture.mesh();
+    const PtrList<volScalarField>& n = mixture.n();
+    composition_.setSize(n.size());
+    speciesFlux_.setSize(n.size());
+    forAll(n, k)
+    {
+        wordList types(n[k].boundaryField().types());
+        forAll(types, patchi)
+        {
+            const fvPatchScalarField& nb = n[k].boundaryField()[patchi];
+            if
+            (
+                !nb.coupled()
+             && !polyPatch::constraintType(nb.patch().patch().type())
+            )
+            {
+                // inletOutlet (mixed) lets the bulk out with the cell's
+                // composition; the air, not the bulk, comes in
+                types[patchi] =
+                    nb.fixesValue() && !isA<mixedFvPatchScalarField>(nb)
+                  ? fixedValueFvPatchScalarField::typeName
+                  : zeroGradientFvPatchScalarField::typeName;
+            }
+        }
+        composition_.set
+        (
+            k,
+            new volScalarField
+            (
+                IOobject
+                (
+                    "c." + mixture.names()[k],
+                    mesh.time().timeName(),
+                    mesh,
+                    IOobject::NO_READ,
+                    IOobject::NO_WRITE
+                ),
+                mesh,
+                dimensionedScalar(dimless, Zero),
+                types
+            )
+        );
+        speciesFlux_.set
+        (
+            k,
+            new surfaceScalarField
+            (
+                IOobject
+                (
+                    "nPhi." + mixture.names()[k],
+                    mesh.time().timeName(),
+                    mesh,
+                    IOobject::NO_READ,
+                    IOobject::AUTO_WRITE
+                ),
+                mesh,
+                dimensionedScalar(dimVolume/dimTime, Zero)
+            )
+        );
+    }
+    correctCompositions();
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::speciesAdvection::correct()
+{
+    if (!freeSurface())
+    {
+        correctWeights(bulkFlow_.phi(), false);
+        return;
+    }
+
+    // Weights in the direction of the bulk's own flux, limited on the
+    // compositions (smooth across the free surface, where n jumps)
+    correctCompositions();
+    correctWeights(bulkFlow_.bulkFractionFlux(), true);
+
+    // The face composition weighted by alpha: owner weight
+    // w alpha_P/(w alpha_P + (1 - w) alpha_N); the shared weight where the
+    // face has no bulk on either side
+    const volScalarField& alpha = *bulkFlow_.bulkFraction();
+    const surfaceScalarField& w = weights_();
+    compositionWeights_.reset
+    (
+        new surfaceScalarField("speciesCompositionWeights", w)
+    );
+    surfaceScalarField& wc = compositionWeights_.ref();
+
+    auto alphaWeight = []
+    (
+        const scalar wOwn,
+        const scalar alphaOwn,
+        const scalar alphaNei
+    )
+    {
+        const scalar alphaf = wOwn*alphaOwn + (1 - wOwn)*alphaNei;
+        return alphaf > VSMALL ? wOwn*alphaOwn/alphaf : wOwn;
+    };
+
+    const labelUList& own = alpha.mesh().owner();
+    const labelUList& nei = alpha.mesh().neighbour();
+    const scalarField& alphaIn = alpha.primitiveField();
+    scalarField& wcIn = wc.primitiveFieldRef();
+    forAll(wcIn, facei)
+    {
+        wcIn[facei] =
+            alphaWeight(wcIn[facei], alphaIn[own[facei]], alphaIn[nei[facei]]);
+    }
+    forAll(wc.boundaryField(), patchi)
+    {
+        const fvPatchScalarField& alphab = alpha.boundaryField()[patchi];
+        if (!alphab.coupled())
+        {
+            continue;
+        }
+        const scalarField alphaOwn(alphab.patchInternalField());
+        const scalarField alphaNei(alphab.patchNeighbourField());
+        fvsPatchScalarField& wcb = wc.boundaryFieldRef()[patchi];
+        forAll(wcb, facei)
+        {
+            wcb[facei] =
+                alphaWeight(wcb[facei], alphaOwn[facei], alphaNei[facei]);
+        }
+    }
+}
+
+
 Foam::tmp<Foam::fvScalarMatrix> Foam::speciesAdvection::fvmDiv
 (
-    const surfaceScalarField& phi,
     const volScalarField& n
 ) const
 {
+    const surfaceScalarField& phi = bulkFlow_.phi();
     if (!weights_.valid())
     {
         return fvm::div(phi, n, schemeName_);
@@ -105,4 +414,128 @@ Foam::tmp<Foam::fvScalarMatrix> Foam::speciesAdvection::fvmDiv
 }
 
 
-// ************************************************************************* //
+Foam::tmp<Foam::fvScalarMatrix> Foam::speciesAdvection::ddtDiv
+(
+    const label k
+) const
+{
+    const fvMesh& mesh = mixture_.mesh();
+    const volScalarField& alpha = *bulkFlow_.bulkFraction();
+    const surfaceScalarField& alphaPhi = bulkFlow_.bulkFractionFlux();
+    const scalar packed = bulkFlow_.packedFraction();
+    const volScalarField& c = composition_[k];
+    const scalar rDeltaT = 1.0/mesh.time().deltaTValue();
+    const scalarField& V = mesh.V().field();
+
+    // packedFraction div(alphaPhi c) with the alpha-weighted face values
+    tmp<fvScalarMatrix> tEqn
+    (
+        fv::gaussConvectionScheme<scalar>
+        (
+            mesh,
+            alphaPhi,
+            tmp<surfaceInterpolationScheme<scalar>>
+            (
+                new sharedWeights(mesh, compositionWeights_())
+            )
+        ).fvmDiv(alphaPhi, c)
+    );
+    fvScalarMatrix& eqn = tEqn.ref();
+
+    // packedFraction ddt(alpha c), implicit Euler with alpha's old and new
+    // values, and emptyWeight_ ddt(c), which keeps the rows of empty cells
+    // regular (their composition stays the mean 1/N)
+    eqn.diag() += (alpha.primitiveField() + emptyWeight_)*V*rDeltaT;
+    eqn.source() +=
+        (alpha.oldTime().primitiveField() + emptyWeight_)
+       *c.primitiveField()*V*rDeltaT;
+
+    eqn *= dimensionedScalar("packedFraction", dimless, packed);
+    return tEqn;
+}
+
+
+Foam::tmp<Foam::fvScalarMatrix> Foam::speciesAdvection::laplacian
+(
+    const label k,
+    const surfaceScalarField& Df
+) const
+{
+    // Diffusion inside the bulk only: alpha on the face is the smaller of
+    // its two cells' (none through the free surface)
+    const volScalarField& alpha = *bulkFlow_.bulkFraction();
+    surfaceScalarField alphaf
+    (
+        IOobject("alphaMinf", alpha.time().timeName(), alpha.mesh()),
+        alpha.mesh(),
+        dimensionedScalar(dimless, Zero)
+    );
+    const labelUList& own = alpha.mesh().owner();
+    const labelUList& nei = alpha.mesh().neighbour();
+    forAll(alphaf, facei)
+    {
+        alphaf[facei] = min(alpha[own[facei]], alpha[nei[facei]]);
+    }
+    forAll(alphaf.boundaryField(), patchi)
+    {
+        const fvPatchScalarField& alphab = alpha.boundaryField()[patchi];
+        alphaf.boundaryFieldRef()[patchi] =
+            alphab.coupled()
+          ? min(alphab.patchInternalField(), alphab.patchNeighbourField())
+          : tmp<scalarField>(alphab);
+    }
+
+    return fvm::laplacian
+    (
+        bulkFlow_.packedFraction()*Df*alphaf,
+        composition_[k],
+        "laplacian(D,n)"
+    );
+}
+
+
+Foam::tmp<Foam::fvScalarMatrix> Foam::speciesAdvection::inComposition
+(
+    const label k,
+    const tmp<fvScalarMatrix>& tnEqn
+) const
+{
+    // n = packedFraction alpha c in every cell: a diagonal matrix in n is
+    // the same equation in c with its diagonal times packedFraction alpha
+    const fvScalarMatrix& nEqn = tnEqn();
+    if (nEqn.hasUpper() || nEqn.hasLower())
+    {
+        FatalErrorInFunction
+            << "only a diagonal matrix (a source) in "
+            << nEqn.psi().name() << " can be written for its composition"
+            << abort(FatalError);
+    }
+
+    tmp<fvScalarMatrix> tcEqn
+    (
+        new fvScalarMatrix(composition_[k], nEqn.dimensions())
+    );
+    fvScalarMatrix& cEqn = tcEqn.ref();
+    cEqn.diag() = nEqn.diag()*bulkSolids();
+    cEqn.source() = nEqn.source();
+    tnEqn.clear();
+    return tcEqn;
+}
+
+
+void Foam::speciesAdvection::setSpecies(const label k, volScalarField& n)
+{
+    const volScalarField& c = composition_[k];
+    n.primitiveFieldRef() = bulkSolids()*c.primitiveField();
+    n.correctBoundaryConditions();
+
+    // The species' volume flux: packedFraction alphaPhi c_f, as in its
+    // equation
+    speciesFlux_[k] =
+        bulkFlow_.packedFraction()*bulkFlow_.bulkFractionFlux()
+       *surfaceInterpolationScheme<scalar>::interpolate
+        (
+            c,
+            tmp<surfaceScalarField>(compositionWeights_())
+        );
+}

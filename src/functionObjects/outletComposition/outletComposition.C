@@ -196,13 +196,19 @@ bool Foam::functionObjects::outletComposition::execute()
     const surfaceScalarField& phi = tphi();
 
     // A species with a flux of its own (phi.<species>, bulkFlow
-    // particlePass) crosses with it
+    // particlePass) crosses with it; the species of a bulk with a free
+    // surface (bulkFlow muI) have their volume fluxes, nPhi.<species>
     List<tmp<volScalarField>> n(species_.size());
     List<tmp<surfaceScalarField>> speciesPhi(species_.size());
+    List<tmp<surfaceScalarField>> speciesFlux(species_.size());
     forAll(species_, k)
     {
-        n[k] = registeredOrRead(mesh_, "n." + species_[k].name);
-        speciesPhi[k] = flux(phiName_ + "." + species_[k].name, true);
+        speciesFlux[k] = flux("nPhi." + species_[k].name, true);
+        if (!speciesFlux[k].valid())
+        {
+            n[k] = registeredOrRead(mesh_, "n." + species_[k].name);
+            speciesPhi[k] = flux(phiName_ + "." + species_[k].name, true);
+        }
     }
 
     // The solver's time step; between the processed times afterwards
@@ -221,12 +227,23 @@ bool Foam::functionObjects::outletComposition::execute()
         flows[0] = gSum(phip);
         forAll(species_, k)
         {
-            const scalarField& phik =
-                speciesPhi[k].valid()
-              ? speciesPhi[k]().boundaryField()[patchi]
-              : phip;
-            const scalar massFlow =
-                species_[k].rho*gSum(phik*n[k]().boundaryField()[patchi]);
+            scalar massFlow = 0;
+            if (speciesFlux[k].valid())
+            {
+                massFlow =
+                    species_[k].rho
+                   *gSum(speciesFlux[k]().boundaryField()[patchi]);
+            }
+            else
+            {
+                const scalarField& phik =
+                    speciesPhi[k].valid()
+                  ? speciesPhi[k]().boundaryField()[patchi]
+                  : phip;
+                massFlow =
+                    species_[k].rho
+                   *gSum(phik*n[k]().boundaryField()[patchi]);
+            }
             flows[k + 1] = massFlow;
             cumulative_[pi][k] += massFlow*dt;
         }
