@@ -119,8 +119,11 @@ test_inclined_plane_mui()
 }
 
 # muI's bad input: mu_s >= mu_d, a negative I_0, a negative d, an unknown
-# forces, etaMax, pMin, rhoAir, muAir not > 0, packedFraction above 1: each
-# a fatal error naming the entry, nothing written
+# forces, etaMax, pMin, rhoAir, muAir not > 0, packedFraction above 1, an
+# unknown or out-of-range wall condition, species whose sum is not
+# packedFraction alpha.granular, a species ddt scheme other than Euler, a
+# div(phi,n) with explicit correction: each a fatal error naming the entry
+# or file, nothing written
 test_mui_bad_input()
 {
     local dir="$workRoot/muIBadInput" entry value expect
@@ -163,6 +166,33 @@ test_mui_bad_input()
         grep -q "FOAM FATAL IO ERROR" "$case/log.solver" || { echo "bed $value: not a FatalIOError"; return 1; }
         [ -z "$(find "$case" -mindepth 1 -maxdepth 1 -name '0.0*' | head -1)" ] || { echo "bed $value: a time directory was written"; return 1; }
         echo "bed U $value: refused: $(grep -m1 -oF "$expect" "$case/log.solver")"
+    done
+    # The species live in the bulk: their sum must be packedFraction alpha
+    # at the start, their ddt scheme Euler (as MULES), their div(phi,n)
+    # scheme one without explicit correction
+    local edit
+    for entry in "sum:differs from packedFraction 0.6 x alpha.granular" "ddt:ddtSchemes: 'ddt(n.grain)' is CrankNicolson" "div:divSchemes: 'div(phi,n)' is Gauss linearUpwind"
+    do
+        edit="${entry%%:*}"; expect="${entry#*:}"
+        rm -rf "$dir"; mkdir -p "$dir"
+        cp -r "$validationDir/inclinedPlaneMuI" "$dir/"
+        local case="$dir/inclinedPlaneMuI"
+        echo "FoamFile { version 2.0; format ascii; class uniformDimensionedVectorField; location \"constant\"; object g; } dimensions [0 1 -2 0 0 0 0]; value (4.6 0 -8.66);" > "$case/constant/g"
+        blockMesh -case "$case" > "$case/log.blockMesh" 2>&1 || return 1
+        cp -r "$case/0.orig" "$case/0"
+        case "$edit" in
+            sum) sed -i 's/^internalField .*/internalField   uniform 0.3;/' "$case/0/n.grain" ;;
+            ddt) sed -i 's/^\( *default *\)Euler;/\1Euler;\n    ddt(n.grain) CrankNicolson 0.9;/' "$case/system/fvSchemes" ;;
+            div) sed -i 's/div(phi,n) *Gauss vanLeer01;/div(phi,n) Gauss linearUpwind grad(n);/' "$case/system/fvSchemes" ;;
+        esac
+        if segregationDegradationFoam -case "$case" > "$case/log.solver" 2>&1
+        then
+            echo "$edit accepted"; return 1
+        fi
+        grep -qF "$expect" "$case/log.solver" || { echo "$edit: message lacks \"$expect\""; sed -n '/FOAM FATAL/,/FOAM exiting/p' "$case/log.solver" | head -10; return 1; }
+        grep -q "FOAM FATAL IO ERROR" "$case/log.solver" || { echo "$edit: not a FatalIOError"; return 1; }
+        [ -z "$(find "$case" -mindepth 1 -maxdepth 1 -name '0.0*' | head -1)" ] || { echo "$edit: a time directory was written"; return 1; }
+        echo "species $edit: refused: $(grep -m1 -oF "$expect" "$case/log.solver")"
     done
 }
 
