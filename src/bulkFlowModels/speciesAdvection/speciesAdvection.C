@@ -24,6 +24,8 @@ const Foam::word Foam::speciesAdvection::schemeName_("div(phi,n)");
 
 const Foam::scalar Foam::speciesAdvection::emptyWeight_ = 1e-9;
 
+const Foam::scalar Foam::speciesAdvection::bulkCellAlpha_ = 0.5;
+
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
@@ -340,27 +342,20 @@ void Foam::speciesAdvection::correct()
     correctCompositions();
     correctWeights(bulkFlow_.bulkFractionFlux(), true);
 
-    // The face composition weighted by alpha: owner weight
-    // w alpha_P/(w alpha_P + (1 - w) alpha_N); the shared weight where the
-    // face has no bulk on either side
+    // The composition crossing a face: the shared (limited) weights where
+    // both cells hold bulk (alpha >= bulkCellAlpha_ after the step), upwind
+    // in the bulk's own flux elsewhere. A cell without bulk has no
+    // composition of its own, and a downwind weight on it would leave a
+    // cell the bulk enters with a diagonal below its inflow (a cell the
+    // bulk left within the step has alpha' = 0 while its old content
+    // crossed the face): with upwind there the matrix is an M-matrix.
     const volScalarField& alpha = *bulkFlow_.bulkFraction();
-    const surfaceScalarField& w = weights_();
+    const surfaceScalarField& alphaPhi = bulkFlow_.bulkFractionFlux();
     compositionWeights_.reset
     (
-        new surfaceScalarField("speciesCompositionWeights", w)
+        new surfaceScalarField("speciesCompositionWeights", weights_())
     );
     surfaceScalarField& wc = compositionWeights_.ref();
-
-    auto alphaWeight = []
-    (
-        const scalar wOwn,
-        const scalar alphaOwn,
-        const scalar alphaNei
-    )
-    {
-        const scalar alphaf = wOwn*alphaOwn + (1 - wOwn)*alphaNei;
-        return alphaf > VSMALL ? wOwn*alphaOwn/alphaf : wOwn;
-    };
 
     const labelUList& own = alpha.mesh().owner();
     const labelUList& nei = alpha.mesh().neighbour();
@@ -368,8 +363,10 @@ void Foam::speciesAdvection::correct()
     scalarField& wcIn = wc.primitiveFieldRef();
     forAll(wcIn, facei)
     {
-        wcIn[facei] =
-            alphaWeight(wcIn[facei], alphaIn[own[facei]], alphaIn[nei[facei]]);
+        if (min(alphaIn[own[facei]], alphaIn[nei[facei]]) < bulkCellAlpha_)
+        {
+            wcIn[facei] = pos0(alphaPhi[facei]);
+        }
     }
     forAll(wc.boundaryField(), patchi)
     {
@@ -380,11 +377,15 @@ void Foam::speciesAdvection::correct()
         }
         const scalarField alphaOwn(alphab.patchInternalField());
         const scalarField alphaNei(alphab.patchNeighbourField());
+        const fvsPatchScalarField& alphaPhib =
+            alphaPhi.boundaryField()[patchi];
         fvsPatchScalarField& wcb = wc.boundaryFieldRef()[patchi];
         forAll(wcb, facei)
         {
-            wcb[facei] =
-                alphaWeight(wcb[facei], alphaOwn[facei], alphaNei[facei]);
+            if (min(alphaOwn[facei], alphaNei[facei]) < bulkCellAlpha_)
+            {
+                wcb[facei] = pos0(alphaPhib[facei]);
+            }
         }
     }
 }
@@ -427,7 +428,7 @@ Foam::tmp<Foam::fvScalarMatrix> Foam::speciesAdvection::ddtDiv
     const scalar rDeltaT = 1.0/mesh.time().deltaTValue();
     const scalarField& V = mesh.V().field();
 
-    // packedFraction div(alphaPhi c) with the alpha-weighted face values
+    // packedFraction div(alphaPhi c) with the composition weights
     tmp<fvScalarMatrix> tEqn
     (
         fv::gaussConvectionScheme<scalar>
