@@ -118,6 +118,36 @@ test_inclined_plane_mui()
     done
 }
 
+# mui_bad_case DIR: a fresh copy of validation/inclinedPlaneMuI in DIR,
+# meshed, with 0/ and gravity tilted to 28 degrees
+mui_bad_case()
+{
+    rm -rf "$1"; mkdir -p "$1"
+    cp -r "$validationDir/inclinedPlaneMuI" "$1/"
+    local case="$1/inclinedPlaneMuI"
+    echo "FoamFile { version 2.0; format ascii; class uniformDimensionedVectorField; location \"constant\"; object g; } dimensions [0 1 -2 0 0 0 0]; value (4.6 0 -8.66);" > "$case/constant/g"
+    blockMesh -case "$case" > "$case/log.blockMesh" 2>&1 || return 1
+    cp -r "$case/0.orig" "$case/0"
+}
+
+# mui_expect_refusal CASE LABEL EXPECT [io]: the solver stops with EXPECT in
+# its log (a FatalIOError with `io`) and writes no time directory
+mui_expect_refusal()
+{
+    local case="$1" label="$2" expect="$3"
+    if segregationDegradationFoam -case "$case" > "$case/log.solver" 2>&1
+    then
+        echo "$label accepted"; return 1
+    fi
+    grep -qF "$expect" "$case/log.solver" || { echo "$label: message lacks \"$expect\""; sed -n '/FOAM FATAL/,/FOAM exiting/p' "$case/log.solver" | head -10; return 1; }
+    if [ "${4:-}" = io ]
+    then
+        grep -q "FOAM FATAL IO ERROR" "$case/log.solver" || { echo "$label: not a FatalIOError"; return 1; }
+    fi
+    [ -z "$(find "$case" -mindepth 1 -maxdepth 1 -name '0.0*' | head -1)" ] || { echo "$label: a time directory was written"; return 1; }
+    echo "$label: refused: $(grep -m1 -oF "$expect" "$case/log.solver")"
+}
+
 # muI's bad input: mu_s >= mu_d, a negative I_0, a negative d, an unknown
 # forces, etaMax, pMin, rhoAir, muAir not > 0, packedFraction above 1, an
 # unknown or out-of-range wall condition, species whose sum is not
@@ -126,73 +156,36 @@ test_inclined_plane_mui()
 # or file, nothing written
 test_mui_bad_input()
 {
-    local dir="$workRoot/muIBadInput" entry value expect
+    local dir="$workRoot/muIBadInput" case="$workRoot/muIBadInput/inclinedPlaneMuI" entry value expect
     for entry in "mu_s 0.7:'mu_d 0.643' must be > mu_s" "I_0 -0.1:'I_0 -0.1' must be > 0" "d -1e-3:'d -0.001' must be > 0" "forces cellCentred:Unknown 'forces cellCentred'; valid: (faceFlux cellGradient)" "etaMax -1:'etaMax -1' must be > 0" "pMin 0:'pMin 0' must be > 0" "rhoAir -1.2:'rhoAir -1.2' must be > 0" "muAir 0:'muAir 0' must be > 0" "packedFraction 1.2:'packedFraction 1.2' must lie in (0, 1]"
     do
         value="${entry%%:*}"; expect="${entry#*:}"
-        rm -rf "$dir"; mkdir -p "$dir"
-        cp -r "$validationDir/inclinedPlaneMuI" "$dir/"
-        local case="$dir/inclinedPlaneMuI"
+        mui_bad_case "$dir" || return 1
         echo "${value};" > "$case/constant/muIOverrides"
-        cp "$validationDir/inclinedPlaneMuI/constant/granularProperties" "$case/constant/"
-        echo "FoamFile { version 2.0; format ascii; class uniformDimensionedVectorField; location \"constant\"; object g; } dimensions [0 1 -2 0 0 0 0]; value (4.6 0 -8.66);" > "$case/constant/g"
-        blockMesh -case "$case" > "$case/log.blockMesh" 2>&1 || return 1
-        cp -r "$case/0.orig" "$case/0"
-        if segregationDegradationFoam -case "$case" > "$case/log.solver" 2>&1
-        then
-            echo "$value accepted"; return 1
-        fi
-        grep -qF "$expect" "$case/log.solver" || { echo "$value: message lacks \"$expect\""; sed -n '/FOAM FATAL/,/FOAM exiting/p' "$case/log.solver" | head -10; return 1; }
-        [ -z "$(find "$case" -mindepth 1 -maxdepth 1 -name '0.0*' | head -1)" ] || { echo "$value: a time directory was written"; return 1; }
-        echo "$value: refused: $(grep -m1 -oF "$expect" "$case/log.solver")"
+        mui_expect_refusal "$case" "$value" "$expect" || return 1
     done
     # The wall condition: an unknown model (OpenFOAM's selection lists the
     # valid types) and a wall friction angle outside [0, 90)
     for entry in "coulombFriction; wallFrictionAngle 20:Unknown patchField type coulombFriction" "coulombWallFriction; wallFrictionAngle 95:'wallFrictionAngle 95' on patch bed of U must lie in [0, 90)" "coulombWallFriction:Entry 'wallFrictionAngle' not found"
     do
         value="${entry%%:*}"; expect="${entry#*:}"
-        rm -rf "$dir"; mkdir -p "$dir"
-        cp -r "$validationDir/inclinedPlaneMuI" "$dir/"
-        local case="$dir/inclinedPlaneMuI"
-        echo "FoamFile { version 2.0; format ascii; class uniformDimensionedVectorField; location \"constant\"; object g; } dimensions [0 1 -2 0 0 0 0]; value (4.6 0 -8.66);" > "$case/constant/g"
-        blockMesh -case "$case" > "$case/log.blockMesh" 2>&1 || return 1
-        cp -r "$case/0.orig" "$case/0"
+        mui_bad_case "$dir" || return 1
         foamDictionary -case "$case" -entry boundaryField.bed -set "{ type ${value}; value uniform (0 0 0); }" "$case/0/U" > /dev/null || return 1
-        if segregationDegradationFoam -case "$case" > "$case/log.solver" 2>&1
-        then
-            echo "bed $value accepted"; return 1
-        fi
-        grep -qF "$expect" "$case/log.solver" || { echo "bed $value: message lacks \"$expect\""; sed -n '/FOAM FATAL/,/FOAM exiting/p' "$case/log.solver" | head -10; return 1; }
-        grep -q "FOAM FATAL IO ERROR" "$case/log.solver" || { echo "bed $value: not a FatalIOError"; return 1; }
-        [ -z "$(find "$case" -mindepth 1 -maxdepth 1 -name '0.0*' | head -1)" ] || { echo "bed $value: a time directory was written"; return 1; }
-        echo "bed U $value: refused: $(grep -m1 -oF "$expect" "$case/log.solver")"
+        mui_expect_refusal "$case" "bed U $value" "$expect" io || return 1
     done
     # The species live in the bulk: their sum must be packedFraction alpha
     # at the start, their ddt scheme Euler (as MULES), their div(phi,n)
     # scheme one without explicit correction
-    local edit
     for entry in "sum:differs from packedFraction 0.6 x alpha.granular" "ddt:ddtSchemes: 'ddt(n.grain)' is CrankNicolson" "div:divSchemes: 'div(phi,n)' is Gauss linearUpwind"
     do
-        edit="${entry%%:*}"; expect="${entry#*:}"
-        rm -rf "$dir"; mkdir -p "$dir"
-        cp -r "$validationDir/inclinedPlaneMuI" "$dir/"
-        local case="$dir/inclinedPlaneMuI"
-        echo "FoamFile { version 2.0; format ascii; class uniformDimensionedVectorField; location \"constant\"; object g; } dimensions [0 1 -2 0 0 0 0]; value (4.6 0 -8.66);" > "$case/constant/g"
-        blockMesh -case "$case" > "$case/log.blockMesh" 2>&1 || return 1
-        cp -r "$case/0.orig" "$case/0"
-        case "$edit" in
+        value="${entry%%:*}"; expect="${entry#*:}"
+        mui_bad_case "$dir" || return 1
+        case "$value" in
             sum) sed -i 's/^internalField .*/internalField   uniform 0.3;/' "$case/0/n.grain" ;;
             ddt) sed -i 's/^\( *default *\)Euler;/\1Euler;\n    ddt(n.grain) CrankNicolson 0.9;/' "$case/system/fvSchemes" ;;
             div) sed -i 's/div(phi,n) *Gauss vanLeer01;/div(phi,n) Gauss linearUpwind grad(n);/' "$case/system/fvSchemes" ;;
         esac
-        if segregationDegradationFoam -case "$case" > "$case/log.solver" 2>&1
-        then
-            echo "$edit accepted"; return 1
-        fi
-        grep -qF "$expect" "$case/log.solver" || { echo "$edit: message lacks \"$expect\""; sed -n '/FOAM FATAL/,/FOAM exiting/p' "$case/log.solver" | head -10; return 1; }
-        grep -q "FOAM FATAL IO ERROR" "$case/log.solver" || { echo "$edit: not a FatalIOError"; return 1; }
-        [ -z "$(find "$case" -mindepth 1 -maxdepth 1 -name '0.0*' | head -1)" ] || { echo "$edit: a time directory was written"; return 1; }
-        echo "species $edit: refused: $(grep -m1 -oF "$expect" "$case/log.solver")"
+        mui_expect_refusal "$case" "species $value" "$expect" io || return 1
     done
 }
 

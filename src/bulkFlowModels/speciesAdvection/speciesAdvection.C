@@ -146,13 +146,15 @@ void Foam::speciesAdvection::checkInitialSum() const
 {
     const volScalarField& alpha = *bulkFlow_.bulkFraction();
     const scalar packed = bulkFlow_.packedFraction();
-    scalarField sum(alpha.primitiveField().size(), Zero);
-    for (const volScalarField& n : mixture_.n())
-    {
-        sum += n.primitiveField();
-    }
     const scalar mismatch =
-        gMax(mag(sum - packed*alpha.primitiveField()));
+        gMax
+        (
+            mag
+            (
+                mixture_.nTotal().primitiveField()
+              - packed*alpha.primitiveField()
+            )
+        );
     if (mismatch > 1e-4*packed)
     {
         FatalIOError
@@ -229,6 +231,38 @@ void Foam::speciesAdvection::correctCompositions()
     {
         c.correctBoundaryConditions();
     }
+}
+
+
+Foam::tmp<Foam::surfaceScalarField>
+Foam::speciesAdvection::bulkFractionMinFaces() const
+{
+    const volScalarField& alpha = *bulkFlow_.bulkFraction();
+    tmp<surfaceScalarField> talphaf
+    (
+        new surfaceScalarField
+        (
+            IOobject("alphaMinf", alpha.time().timeName(), alpha.mesh()),
+            alpha.mesh(),
+            dimensionedScalar(dimless, Zero)
+        )
+    );
+    surfaceScalarField& alphaf = talphaf.ref();
+    const labelUList& own = alpha.mesh().owner();
+    const labelUList& nei = alpha.mesh().neighbour();
+    forAll(alphaf, facei)
+    {
+        alphaf[facei] = min(alpha[own[facei]], alpha[nei[facei]]);
+    }
+    forAll(alphaf.boundaryField(), patchi)
+    {
+        const fvPatchScalarField& alphab = alpha.boundaryField()[patchi];
+        alphaf.boundaryFieldRef()[patchi] =
+            alphab.coupled()
+          ? min(alphab.patchInternalField(), alphab.patchNeighbourField())
+          : tmp<scalarField>(alphab);
+    }
+    return talphaf;
 }
 
 
@@ -337,8 +371,9 @@ void Foam::speciesAdvection::correct()
         return;
     }
 
-    // Weights in the direction of the bulk's own flux, limited on the
-    // compositions (smooth across the free surface, where n jumps)
+    // Weights in the direction of the bulk's own flux (the limiter is the
+    // species' shared one, computed on n), then the compositions of the
+    // step's start
     correctCompositions();
     correctWeights(bulkFlow_.bulkFractionFlux(), true);
 
@@ -349,42 +384,32 @@ void Foam::speciesAdvection::correct()
     // cell the bulk enters with a diagonal below its inflow (a cell the
     // bulk left within the step has alpha' = 0 while its old content
     // crossed the face): with upwind there the matrix is an M-matrix.
-    const volScalarField& alpha = *bulkFlow_.bulkFraction();
+    // Non-coupled patches keep the boundary values.
     const surfaceScalarField& alphaPhi = bulkFlow_.bulkFractionFlux();
-    compositionWeights_.reset
-    (
-        new surfaceScalarField("speciesCompositionWeights", weights_())
-    );
-    surfaceScalarField& wc = compositionWeights_.ref();
+    const surfaceScalarField alphaMin(bulkFractionMinFaces());
+    surfaceScalarField& w = weights_.ref();
 
-    const labelUList& own = alpha.mesh().owner();
-    const labelUList& nei = alpha.mesh().neighbour();
-    const scalarField& alphaIn = alpha.primitiveField();
-    scalarField& wcIn = wc.primitiveFieldRef();
-    forAll(wcIn, facei)
+    forAll(w, facei)
     {
-        if (min(alphaIn[own[facei]], alphaIn[nei[facei]]) < bulkCellAlpha_)
+        if (alphaMin[facei] < bulkCellAlpha_)
         {
-            wcIn[facei] = pos0(alphaPhi[facei]);
+            w[facei] = pos0(alphaPhi[facei]);
         }
     }
-    forAll(wc.boundaryField(), patchi)
+    forAll(w.boundaryField(), patchi)
     {
-        const fvPatchScalarField& alphab = alpha.boundaryField()[patchi];
-        if (!alphab.coupled())
+        if (!w.boundaryField()[patchi].coupled())
         {
             continue;
         }
-        const scalarField alphaOwn(alphab.patchInternalField());
-        const scalarField alphaNei(alphab.patchNeighbourField());
-        const fvsPatchScalarField& alphaPhib =
-            alphaPhi.boundaryField()[patchi];
-        fvsPatchScalarField& wcb = wc.boundaryFieldRef()[patchi];
-        forAll(wcb, facei)
+        const fvsPatchScalarField& alphaMinb = alphaMin.boundaryField()[patchi];
+        const fvsPatchScalarField& alphaPhib = alphaPhi.boundaryField()[patchi];
+        fvsPatchScalarField& wb = w.boundaryFieldRef()[patchi];
+        forAll(wb, facei)
         {
-            if (min(alphaOwn[facei], alphaNei[facei]) < bulkCellAlpha_)
+            if (alphaMinb[facei] < bulkCellAlpha_)
             {
-                wcb[facei] = pos0(alphaPhib[facei]);
+                wb[facei] = pos0(alphaPhib[facei]);
             }
         }
     }
@@ -437,7 +462,7 @@ Foam::tmp<Foam::fvScalarMatrix> Foam::speciesAdvection::ddtDiv
             alphaPhi,
             tmp<surfaceInterpolationScheme<scalar>>
             (
-                new sharedWeights(mesh, compositionWeights_())
+                new sharedWeights(mesh, weights_())
             )
         ).fvmDiv(alphaPhi, c)
     );
@@ -445,7 +470,7 @@ Foam::tmp<Foam::fvScalarMatrix> Foam::speciesAdvection::ddtDiv
 
     // packedFraction ddt(alpha c), implicit Euler with alpha's old and new
     // values, and emptyWeight_ ddt(c), which keeps the rows of empty cells
-    // regular (their composition stays the mean 1/N)
+    // regular (their composition stays the domain's mean)
     eqn.diag() += (alpha.primitiveField() + emptyWeight_)*V*rDeltaT;
     eqn.source() +=
         (alpha.oldTime().primitiveField() + emptyWeight_)
@@ -464,31 +489,9 @@ Foam::tmp<Foam::fvScalarMatrix> Foam::speciesAdvection::laplacian
 {
     // Diffusion inside the bulk only: alpha on the face is the smaller of
     // its two cells' (none through the free surface)
-    const volScalarField& alpha = *bulkFlow_.bulkFraction();
-    surfaceScalarField alphaf
-    (
-        IOobject("alphaMinf", alpha.time().timeName(), alpha.mesh()),
-        alpha.mesh(),
-        dimensionedScalar(dimless, Zero)
-    );
-    const labelUList& own = alpha.mesh().owner();
-    const labelUList& nei = alpha.mesh().neighbour();
-    forAll(alphaf, facei)
-    {
-        alphaf[facei] = min(alpha[own[facei]], alpha[nei[facei]]);
-    }
-    forAll(alphaf.boundaryField(), patchi)
-    {
-        const fvPatchScalarField& alphab = alpha.boundaryField()[patchi];
-        alphaf.boundaryFieldRef()[patchi] =
-            alphab.coupled()
-          ? min(alphab.patchInternalField(), alphab.patchNeighbourField())
-          : tmp<scalarField>(alphab);
-    }
-
     return fvm::laplacian
     (
-        bulkFlow_.packedFraction()*Df*alphaf,
+        bulkFlow_.packedFraction()*Df*bulkFractionMinFaces(),
         composition_[k],
         "laplacian(D,n)"
     );
@@ -537,6 +540,6 @@ void Foam::speciesAdvection::setSpecies(const label k, volScalarField& n)
        *surfaceInterpolationScheme<scalar>::interpolate
         (
             c,
-            tmp<surfaceScalarField>(compositionWeights_())
+            tmp<surfaceScalarField>(weights_())
         );
 }
