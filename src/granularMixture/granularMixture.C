@@ -107,18 +107,23 @@ Foam::scalar Foam::granularMixture::readPhiMin
 
 void Foam::granularMixture::checkInitialFields() const
 {
+    // Fields the solver wrote hold round-off negatives at the level of the
+    // linear solvers' tolerance (-1e-22 .. -1e-11 in cells the solids have
+    // left); a restart from them must be accepted
+    const scalar roundOff = 1e-10;
     forAll(n_, i)
     {
         const scalarField& ni = n_[i].primitiveField();
         forAll(ni, celli)
         {
-            if (!std::isfinite(ni[celli]) || ni[celli] < 0)
+            if (!std::isfinite(ni[celli]) || ni[celli] < -roundOff)
             {
                 FatalErrorInFunction
                     << "Field " << n_[i].objectPath() << ": value "
                     << ni[celli] << " at cell " << celli
                     << " (centre " << mesh_.C()[celli] << ")." << nl
                     << "    A solids volume fraction must be finite and >= 0"
+                    << " (round-off down to -" << roundOff << " accepted)"
                     << nl << exit(FatalError);
             }
         }

@@ -79,6 +79,9 @@ test_bad_input()
         breakageMissingCoefficient)
             set_breakage "$gp" "model powerLaw; powerLawCoeffs { dRef 1e-3; a 3; } daughterSizeDistribution { model uniformBinary; }"
             expect=("k" "powerLawCoeffs") ;;
+        laplacianLimited)
+            foamDictionary -entry "laplacianSchemes/laplacian(D,n)" -set "Gauss linear limited corrected 0.33" "$dir/system/fvSchemes" > /dev/null
+            expect=("laplacian(D,n)" "limited" "Valid snGrad schemes: corrected, uncorrected") ;;
         *) echo "unknown kind $kind"; return 1 ;;
     esac
 
@@ -103,4 +106,30 @@ test_bad_input()
     written=$(find "$dir" -mindepth 1 -maxdepth 1 -type d -regextype posix-extended -regex '.*/[0-9.eE+-]+' ! -name 0 | head -1)
     [ -z "$written" ] || { echo "a time directory was written: $written"; return 1; }
     echo "clear fatal error for $kind, nothing written"
+}
+
+# A restart from fields the solver wrote: round-off negatives (-1e-22 ..
+# -1e-11 in cells the solids have left; silo3D wrote n.coarse -1.06e-22)
+# are accepted, anything below -1e-10 is still refused naming the field
+test_round_off_initial_value()
+{
+    local dir="$workRoot/roundOffInitial"
+    prepare_small_case "$dir" || return 1
+    foamDictionary -entry internalField -set "uniform -1e-20" "$dir/0/n.fine" > /dev/null
+    segregationDegradationFoam -case "$dir" > "$dir/log.solver" 2>&1 \
+        || { sed -n '/FOAM FATAL/,/FOAM exiting/p' "$dir/log.solver" | head; echo "a -1e-20 initial value was refused"; return 1; }
+    local written
+    written=$(find "$dir" -mindepth 1 -maxdepth 1 -type d -regextype posix-extended -regex '.*/[0-9.eE+-]+' ! -name 0 | head -1)
+    [ -n "$written" ] || { echo "no result written"; return 1; }
+    echo "n.fine -1e-20 accepted, ran to ${written##*/}"
+    rm -rf "$dir"
+    prepare_small_case "$dir" || return 1
+    foamDictionary -entry internalField -set "uniform -1e-9" "$dir/0/n.fine" > /dev/null
+    if segregationDegradationFoam -case "$dir" > "$dir/log.solver" 2>&1
+    then
+        echo "a -1e-9 initial value was accepted"; return 1
+    fi
+    grep -qF "round-off down to -1e-10 accepted" "$dir/log.solver" || { echo "message lacks the round-off bound"; return 1; }
+    grep -q 'n.fine' "$dir/log.solver" || return 1
+    echo "n.fine -1e-9 refused: $(grep -m1 -o 'value -1e-09.*' "$dir/log.solver")"
 }

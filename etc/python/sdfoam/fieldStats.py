@@ -2,8 +2,11 @@
 (python3 standard library; reads ASCII fields with sdfoam.foamcase).
 
   python3 -m sdfoam.fieldStats CASE CHECK [options]; CHECK is one of
-    bounds [--tol 1e-8]    0 <= n.* <= nTotal (+tol) and no non-finite value
-                           in any field of any written time
+    bounds [--tol 1e-8] [--packed P]
+                           0 <= n.* <= nTotal (+tol) and no non-finite value
+                           in any field of any written time; with --packed
+                           also nTotal <= P (+tol): no cell above the
+                           packed solids fraction
     compare OTHER --tol T  max |n.*(CASE) - n.*(OTHER)| <= T at the latest
                            time of both
     changed --tol T        some n.* changed by more than T
@@ -37,11 +40,12 @@ def fail(msg):
     sys.exit(1)
 
 
-def bounds(case, tol):
+def bounds(case, tol, packed=None):
     times = foamcase.timeDirs(case, includeZero=True)
     if len(times) < 2:
         fail("no time written after 0 in " + case)
     worst = 0.0
+    worstTotal = -math.inf
     for t in times:
         for f in os.listdir(os.path.join(case, t)):
             path = os.path.join(case, t, f)
@@ -60,7 +64,15 @@ def bounds(case, tol):
                 worst = max(worst, -v, v - total[i])
                 if v < -tol or v > total[i] + tol:
                     fail("%s/%s cell %d = %.3e outside [0, phi = %.3e]" % (t, n, i, v, total[i]))
+        if packed is not None:
+            i = max(range(len(total)), key=total.__getitem__)
+            worstTotal = max(worstTotal, total[i] - packed)
+            if total[i] > packed + tol:
+                fail("%s: the species' sum in cell %d = %.10f above the packed fraction %g (tol %.1e)"
+                     % (t, i, total[i], packed, tol))
     print("bounds hold at %d times; worst violation %.3e (tol %.1e)" % (len(times), worst, tol))
+    if packed is not None:
+        print("species' sum at most %g %+.3e" % (packed, worstTotal))
 
 
 def compare(case, other, tol):
@@ -132,7 +144,8 @@ if __name__ == "__main__":
     args = sys.argv[3:]
     tol = float(args[args.index("--tol") + 1]) if "--tol" in args else 1e-8
     if what == "bounds":
-        bounds(case, tol)
+        packed = float(args[args.index("--packed") + 1]) if "--packed" in args else None
+        bounds(case, tol, packed)
     elif what == "compare":
         compare(case, args[0], tol)
     elif what == "changed":
