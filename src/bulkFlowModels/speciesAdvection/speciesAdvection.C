@@ -16,6 +16,7 @@
 #include "mixedFvPatchFields.H"
 #include "gaussLaplacianScheme.H"
 #include "uncorrectedSnGrad.H"
+#include "orthogonalSnGrad.H"
 #include "gradScheme.H"
 #include "linear.H"
 #include "fvcDiv.H"
@@ -260,7 +261,7 @@ void Foam::speciesAdvection::correctCompositions()
 }
 
 
-bool Foam::speciesAdvection::laplacianCorrected() const
+Foam::word Foam::speciesAdvection::laplacianSnGrad() const
 {
     const fvMesh& mesh = mixture_.mesh();
     ITstream& is = mesh.laplacianScheme(laplacianName_);
@@ -271,15 +272,11 @@ bool Foam::speciesAdvection::laplacianCorrected() const
             continue;
         }
         const word& w = is[tokeni].wordToken();
-        if (w == "corrected")
+        if (w == "corrected" || w == "uncorrected" || w == "orthogonal")
         {
-            return true;
+            return w;
         }
-        if (w == "uncorrected")
-        {
-            return false;
-        }
-        if (w == "limited" || w == "faceCorrected" || w == "orthogonal")
+        if (w == "limited" || w == "faceCorrected")
         {
             break;
         }
@@ -295,9 +292,34 @@ bool Foam::speciesAdvection::laplacianCorrected() const
         << scheme.str().c_str() << "'; the species share one linear "
         << "diffusion operator (so that their diffusion fluxes sum to the "
         << "total's), which a snGrad limited per species breaks. Valid "
-        << "snGrad schemes: corrected, uncorrected" << nl
+        << "snGrad schemes: corrected, uncorrected, orthogonal" << nl
         << exit(FatalIOError);
-    return false;
+    return word::null;
+}
+
+
+bool Foam::speciesAdvection::gradientsLimited() const
+{
+    // Anything but plain Gauss linear for a species or for the total
+    const fvMesh& mesh = mixture_.mesh();
+    const auto limited = [&](const volScalarField& field)
+    {
+        ITstream& is = mesh.gradScheme("grad(" + field.name() + ')');
+        return
+            !(
+                is.size() == 2
+             && is[0].isWord() && is[0].wordToken() == "Gauss"
+             && is[1].isWord() && is[1].wordToken() == "linear"
+            );
+    };
+    for (const volScalarField& n : mixture_.n())
+    {
+        if (limited(n))
+        {
+            return true;
+        }
+    }
+    return limited(mixture_.nTotal());
 }
 
 
@@ -305,7 +327,7 @@ Foam::tmp<Foam::surfaceScalarField>
 Foam::speciesAdvection::variesAcross(const volScalarField& field) const
 {
     // 1 on the internal and coupled faces whose two cells differ by more
-    // than 1e-6 of the largest total, 0 elsewhere. Differences below that
+    // than 1e-8 of the largest total, 0 elsewhere. Differences below that
     // are the linear solvers' noise: limiters computed from them (ratios
     // of noise) restrict faces at random and differ between serial and
     // parallel runs
@@ -425,7 +447,7 @@ Foam::speciesAdvection::speciesAdvection
             IStringStream("cellLimited Gauss linear 1")()
         )
     ),
-    orthogonalLaplacian_
+    uncorrectedLaplacian_
     (
         new fv::gaussLaplacianScheme<scalar, scalar>
         (
@@ -439,7 +461,28 @@ Foam::speciesAdvection::speciesAdvection
                 new fv::uncorrectedSnGrad<scalar>(mixture.mesh())
             )
         )
-    )
+    ),
+    orthogonalLaplacian_
+    (
+        new fv::gaussLaplacianScheme<scalar, scalar>
+        (
+            mixture.mesh(),
+            tmp<surfaceInterpolationScheme<scalar>>
+            (
+                new linear<scalar>(mixture.mesh())
+            ),
+            tmp<fv::snGradScheme<scalar>>
+            (
+                new fv::orthogonalSnGrad<scalar>(mixture.mesh())
+            )
+        )
+    ),
+    nonOrthogonal_
+    (
+        gMax(mag(mixture.mesh().nonOrthCorrectionVectors())().primitiveField())
+      > 0
+    ),
+    diffusionCorrected_(false)
 {
     if (!freeSurface())
     {
@@ -599,24 +642,33 @@ Foam::tmp<Foam::fvScalarMatrix> Foam::speciesAdvection::fvmDiv
 void Foam::speciesAdvection::correctDiffusion()
 {
     diffusionGrad_.clear();
-    if (!laplacianCorrected())
+    diffusionCorrected_ = false;
+    if (laplacianSnGrad() != "corrected" || !nonOrthogonal_)
     {
         return;
     }
+    diffusionCorrected_ = true;
 
-    // The limiter of each field is |cell-limited gradient|/|gradient| of
-    // the same Gauss linear gradient (cellLimited scales it by one factor
-    // per cell); the smallest over the species and their total is shared,
+    // Gradients Gauss linear (gradSchemes for the species and the total):
+    // the correction is OpenFOAM's corrected one. Limited gradients: the
+    // limiter of each field is |cell-limited gradient|/|gradient| of the
+    // same Gauss linear gradient (cellLimited scales it by one factor per
+    // cell); the smallest over the species and their total is shared,
     // each field counting only in the cells where it varies across some
     // face (variesAcross)
     const fvMesh& mesh = mixture_.mesh();
     const PtrList<volScalarField>& n = mixture_.n();
+    const bool limit = gradientsLimited();
     scalarField limiter(mesh.nCells(), scalar(1));
 
     const auto limitBy = [&](const volScalarField& field)
     {
         const word name("diffusionGrad(" + field.name() + ')');
         tmp<volVectorField> tgLinear(linearGrad_().grad(field, name));
+        if (!limit)
+        {
+            return tgLinear;
+        }
         const volVectorField gLimited(limitedGrad_().grad(field, name));
         const scalarField variesFaces
         (
@@ -640,6 +692,10 @@ void Foam::speciesAdvection::correctDiffusion()
     {
         diffusionGrad_.set(k, limitBy(n[k]).ptr());
     }
+    if (!limit)
+    {
+        return;
+    }
     limitBy(mixture_.nTotal());
 
     for (volVectorField& grad : diffusionGrad_)
@@ -660,9 +716,14 @@ Foam::tmp<Foam::fvScalarMatrix> Foam::speciesAdvection::fvmLaplacian
 
     // The orthogonal part, implicit (Df is on the faces: the scheme's
     // interpolation is not used)
-    tmp<fvScalarMatrix> tnEqn(orthogonalLaplacian_->fvmLaplacian(Df, n));
+    tmp<fvScalarMatrix> tnEqn
+    (
+        laplacianSnGrad() == "orthogonal"
+      ? orthogonalLaplacian_->fvmLaplacian(Df, n)
+      : uncorrectedLaplacian_->fvmLaplacian(Df, n)
+    );
 
-    if (!diffusionGrad_.empty())
+    if (diffusionCorrected_)
     {
         // The non-orthogonal correction, explicit, from the species'
         // Gauss linear gradient with the shared limiter
@@ -674,7 +735,7 @@ Foam::tmp<Foam::fvScalarMatrix> Foam::speciesAdvection::fvmLaplacian
                 k = i;
             }
         }
-        if (k < 0)
+        if (k < 0 || !diffusionGrad_.set(k))
         {
             FatalErrorInFunction
                 << n.name() << " is not a species" << abort(FatalError);
@@ -691,7 +752,7 @@ Foam::tmp<Foam::fvScalarMatrix> Foam::speciesAdvection::fvmLaplacian
                 )
             )().primitiveField();
     }
-    else if (laplacianCorrected())
+    else if (nonOrthogonal_ && laplacianSnGrad() == "corrected")
     {
         FatalErrorInFunction
             << "correctDiffusion() was not called before fvmLaplacian("
@@ -749,7 +810,9 @@ Foam::tmp<Foam::fvScalarMatrix> Foam::speciesAdvection::laplacian
 ) const
 {
     // Diffusion inside the bulk only: alpha on the face is the smaller of
-    // its two cells' (none through the free surface)
+    // its two cells' (none through the free surface). A limited snGrad is
+    // refused as for the species
+    laplacianSnGrad();
     return fvm::laplacian
     (
         bulkFlow_.packedFraction()*Df*bulkFractionMinFaces(),
