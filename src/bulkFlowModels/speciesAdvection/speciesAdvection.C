@@ -15,8 +15,7 @@
 #include "zeroGradientFvPatchFields.H"
 #include "mixedFvPatchFields.H"
 #include "gaussLaplacianScheme.H"
-#include "uncorrectedSnGrad.H"
-#include "orthogonalSnGrad.H"
+#include "snGradScheme.H"
 #include "gradScheme.H"
 #include "linear.H"
 #include "fvcDiv.H"
@@ -447,42 +446,12 @@ Foam::speciesAdvection::speciesAdvection
             IStringStream("cellLimited Gauss linear 1")()
         )
     ),
-    uncorrectedLaplacian_
-    (
-        new fv::gaussLaplacianScheme<scalar, scalar>
-        (
-            mixture.mesh(),
-            tmp<surfaceInterpolationScheme<scalar>>
-            (
-                new linear<scalar>(mixture.mesh())
-            ),
-            tmp<fv::snGradScheme<scalar>>
-            (
-                new fv::uncorrectedSnGrad<scalar>(mixture.mesh())
-            )
-        )
-    ),
-    orthogonalLaplacian_
-    (
-        new fv::gaussLaplacianScheme<scalar, scalar>
-        (
-            mixture.mesh(),
-            tmp<surfaceInterpolationScheme<scalar>>
-            (
-                new linear<scalar>(mixture.mesh())
-            ),
-            tmp<fv::snGradScheme<scalar>>
-            (
-                new fv::orthogonalSnGrad<scalar>(mixture.mesh())
-            )
-        )
-    ),
     nonOrthogonal_
     (
         gMax(mag(mixture.mesh().nonOrthCorrectionVectors())().primitiveField())
       > 0
     ),
-    diffusionCorrected_(false)
+    diffusionTimeIndex_(-1)
 {
     if (!freeSurface())
     {
@@ -641,13 +610,42 @@ Foam::tmp<Foam::fvScalarMatrix> Foam::speciesAdvection::fvmDiv
 
 void Foam::speciesAdvection::correctDiffusion()
 {
+    const fvMesh& mesh = mixture_.mesh();
+    diffusionTimeIndex_ = mesh.time().timeIndex();
+
+    // The implicit part: the orthogonal snGrad for `orthogonal`, else the
+    // uncorrected one (the correction is added explicitly below)
+    const word snGrad(laplacianSnGrad());
+    const word implicitSnGrad
+    (
+        snGrad == "orthogonal" ? "orthogonal" : "uncorrected"
+    );
+    if (!implicitLaplacian_.valid() || implicitSnGrad != implicitSnGrad_)
+    {
+        implicitLaplacian_.reset
+        (
+            new fv::gaussLaplacianScheme<scalar, scalar>
+            (
+                mesh,
+                tmp<surfaceInterpolationScheme<scalar>>
+                (
+                    new linear<scalar>(mesh)
+                ),
+                fv::snGradScheme<scalar>::New
+                (
+                    mesh,
+                    IStringStream(implicitSnGrad)()
+                )
+            )
+        );
+        implicitSnGrad_ = implicitSnGrad;
+    }
+
     diffusionGrad_.clear();
-    diffusionCorrected_ = false;
-    if (laplacianSnGrad() != "corrected" || !nonOrthogonal_)
+    if (snGrad != "corrected" || !nonOrthogonal_)
     {
         return;
     }
-    diffusionCorrected_ = true;
 
     // Gradients Gauss linear (gradSchemes for the species and the total):
     // the correction is OpenFOAM's corrected one. Limited gradients: the
@@ -656,7 +654,6 @@ void Foam::speciesAdvection::correctDiffusion()
     // cell); the smallest over the species and their total is shared,
     // each field counting only in the cells where it varies across some
     // face (variesAcross)
-    const fvMesh& mesh = mixture_.mesh();
     const PtrList<volScalarField>& n = mixture_.n();
     const bool limit = gradientsLimited();
     scalarField limiter(mesh.nCells(), scalar(1));
@@ -708,38 +705,27 @@ void Foam::speciesAdvection::correctDiffusion()
 
 Foam::tmp<Foam::fvScalarMatrix> Foam::speciesAdvection::fvmLaplacian
 (
-    const surfaceScalarField& Df,
-    const volScalarField& n
+    const label k,
+    const surfaceScalarField& Df
 ) const
 {
     const fvMesh& mesh = mixture_.mesh();
+    const volScalarField& n = mixture_.n()[k];
+    if (diffusionTimeIndex_ != mesh.time().timeIndex())
+    {
+        FatalErrorInFunction
+            << "correctDiffusion() was not called in this time step before "
+            << "fvmLaplacian(" << n.name() << ")" << abort(FatalError);
+    }
 
-    // The orthogonal part, implicit (Df is on the faces: the scheme's
-    // interpolation is not used)
-    tmp<fvScalarMatrix> tnEqn
-    (
-        laplacianSnGrad() == "orthogonal"
-      ? orthogonalLaplacian_->fvmLaplacian(Df, n)
-      : uncorrectedLaplacian_->fvmLaplacian(Df, n)
-    );
+    // The implicit part (Df is on the faces: the scheme's interpolation
+    // is not used)
+    tmp<fvScalarMatrix> tnEqn(implicitLaplacian_->fvmLaplacian(Df, n));
 
-    if (diffusionCorrected_)
+    if (k < diffusionGrad_.size())
     {
         // The non-orthogonal correction, explicit, from the species'
-        // Gauss linear gradient with the shared limiter
-        label k = -1;
-        forAll(mixture_.n(), i)
-        {
-            if (&mixture_.n()[i] == &n)
-            {
-                k = i;
-            }
-        }
-        if (k < 0 || !diffusionGrad_.set(k))
-        {
-            FatalErrorInFunction
-                << n.name() << " is not a species" << abort(FatalError);
-        }
+        // Gauss linear gradient (with the shared limiter)
         tnEqn.ref().source() -=
             mesh.V()
            *fvc::div
@@ -751,12 +737,6 @@ Foam::tmp<Foam::fvScalarMatrix> Foam::speciesAdvection::fvmLaplacian
                     diffusionGrad_[k]
                 )
             )().primitiveField();
-    }
-    else if (nonOrthogonal_ && laplacianSnGrad() == "corrected")
-    {
-        FatalErrorInFunction
-            << "correctDiffusion() was not called before fvmLaplacian("
-            << n.name() << ")" << abort(FatalError);
     }
     return tnEqn;
 }
