@@ -13,6 +13,7 @@
 #include "MULES.H"
 #include "constrainHbyA.H"
 #include "constrainPressure.H"
+#include "prghBulkRetainingTotalPressureFvPatchScalarField.H"
 #include "adjustPhi.H"
 #include "findRefCell.H"
 #include "cyclicPolyPatch.H"
@@ -276,6 +277,52 @@ Foam::bulkFlowModels::muI::cellForce() const
 }
 
 
+Foam::label Foam::bulkFlowModels::muI::retainBulk
+(
+    const surfaceScalarField& phiHbyA,
+    const surfaceScalarField& rAUf
+)
+{
+    label nClosed = 0;
+    volScalarField::Boundary& p_rghBf = p_rgh_.boundaryFieldRef();
+    forAll(p_rghBf, patchi)
+    {
+        if (isA<prghBulkRetainingTotalPressureFvPatchScalarField>(p_rghBf[patchi]))
+        {
+            nClosed +=
+                refCast<prghBulkRetainingTotalPressureFvPatchScalarField>
+                (
+                    p_rghBf[patchi]
+                ).retainBulk
+                (
+                    phiHbyA.boundaryField()[patchi],
+                    rAUf.boundaryField()[patchi]
+                );
+        }
+    }
+    return nClosed;
+}
+
+
+Foam::label Foam::bulkFlowModels::muI::switchRetainingFaces()
+{
+    label nSwitched = 0;
+    volScalarField::Boundary& p_rghBf = p_rgh_.boundaryFieldRef();
+    forAll(p_rghBf, patchi)
+    {
+        if (isA<prghBulkRetainingTotalPressureFvPatchScalarField>(p_rghBf[patchi]))
+        {
+            nSwitched +=
+                refCast<prghBulkRetainingTotalPressureFvPatchScalarField>
+                (
+                    p_rghBf[patchi]
+                ).switchFaces(phi_.boundaryField()[patchi]);
+        }
+    }
+    return nSwitched;
+}
+
+
 void Foam::bulkFlowModels::muI::solveFlow()
 {
     const fvMesh& mesh = mixture_.mesh();
@@ -373,31 +420,74 @@ void Foam::bulkFlowModels::muI::solveFlow()
         phiHbyA += phig;
 
         constrainPressure(p_rgh_, U_, phiHbyA, rAtUf);
+        const label nClosed = retainBulk(phiHbyA, rAtUf);
 
-        while (pimple_.correctNonOrthogonal())
+        // The faces of prghBulkRetainingTotalPressure patches are a one-way
+        // valve for the bulk, decided before the solve from the last
+        // pressure: where the solved flux leaves a cell with bulk through
+        // an open face, or a closed face would draw air in, the face
+        // switches and the pressure is solved again (an active set; a
+        // switch is rare after the first steps)
+        const label maxValveIters = 10;
+        label nSwitched = 0;
+        for (label valveIter = 0; ; ++valveIter)
         {
-            fvScalarMatrix p_rghEqn
-            (
-                fvm::laplacian(rAtUf, p_rgh_) == fvc::div(phiHbyA)
-            );
-            p_rghEqn.setReference(pRefCell_, getRefCellValue(p_rgh_, pRefCell_));
-            p_rghEqn.solve(mesh.solver(p_rgh_.select(pimple_.finalInnerIter())));
-
-            if (pimple_.finalNonOrthogonalIter())
+            while (pimple_.correctNonOrthogonal())
             {
-                phi_ = phiHbyA - p_rghEqn.flux();
-                p_rgh_.relax();
-                if (cellGradientForces_)
+                fvScalarMatrix p_rghEqn
+                (
+                    fvm::laplacian(rAtUf, p_rgh_) == fvc::div(phiHbyA)
+                );
+                p_rghEqn.setReference
+                (
+                    pRefCell_,
+                    getRefCellValue(p_rgh_, pRefCell_)
+                );
+                p_rghEqn.solve
+                (
+                    mesh.solver(p_rgh_.select(pimple_.finalInnerIter()))
+                );
+
+                if (pimple_.finalNonOrthogonalIter())
                 {
-                    U_ = HbyA + rAtU*cellForce();
+                    phi_ = phiHbyA - p_rghEqn.flux();
+                    p_rgh_.relax();
+                    if (cellGradientForces_)
+                    {
+                        U_ = HbyA + rAtU*cellForce();
+                    }
+                    else
+                    {
+                        U_ = HbyA
+                          + rAtU
+                           *fvc::reconstruct((phig - p_rghEqn.flux())/rAtUf);
+                    }
+                    U_.correctBoundaryConditions();
                 }
-                else
-                {
-                    U_ = HbyA
-                      + rAtU*fvc::reconstruct((phig - p_rghEqn.flux())/rAtUf);
-                }
-                U_.correctBoundaryConditions();
             }
+
+            const label n = switchRetainingFaces();
+            nSwitched += n;
+            if (n == 0)
+            {
+                break;
+            }
+            if (valveIter == maxValveIters)
+            {
+                // The faces' state stays that of the last solve: the flux
+                // is conservative, a few faces may carry bulk out this once
+                WarningInFunction
+                    << "the open top's faces still switched after "
+                    << maxValveIters + 1 << " pressure solves (" << n
+                    << " in the last)" << endl;
+                break;
+            }
+        }
+        if (nClosed || nSwitched)
+        {
+            Info<< "    muI: open top: " << nClosed << " face(s) closed to"
+                << " the bulk before the pressure solve, " << nSwitched
+                << " switched after it" << endl;
         }
 
         // interFoam's continuity check: the volume error of the step

@@ -1,0 +1,341 @@
+/*---------------------------------------------------------------------------*\
+  =========                 |
+  \\      /  F ield         | segregationDegradationFoam
+   \\    /   O peration     |
+    \\  /    A nd           |
+     \\/     M anipulation  |
+\*---------------------------------------------------------------------------*/
+
+#include "prghBulkRetainingTotalPressureFvPatchScalarField.H"
+#include "addToRunTimeSelectionTable.H"
+#include "fvPatchFieldMapper.H"
+#include "volFields.H"
+#include "surfaceFields.H"
+#include "gravityMeshObject.H"
+#include "uniformDimensionedFields.H"
+
+// * * * * * * * * * * * * * * * Private Functions * * * * * * * * * * * * * //
+
+Foam::tmp<Foam::scalarField>
+Foam::prghBulkRetainingTotalPressureFvPatchScalarField::totalPressure() const
+{
+    const objectRegistry& db = this->db();
+    const uniformDimensionedVectorField& g =
+        meshObjects::gravity::New(db.time());
+    const scalar hRef =
+        db.foundObject<uniformDimensionedScalarField>("hRef")
+      ? db.lookupObject<uniformDimensionedScalarField>("hRef").value()
+      : 0;
+    const scalar magG = mag(g.value());
+    const scalar ghRef =
+        magG > SMALL ? (g.value() & (cmptMag(g.value())/magG))*hRef : 0;
+
+    // Before the bulk flow model has made rho, phi and U (the field's
+    // construction at start-up): p0
+    if
+    (
+        !db.foundObject<volScalarField>(rhoName_)
+     || !db.foundObject<surfaceScalarField>(phiName_)
+     || !db.foundObject<volVectorField>(UName_)
+    )
+    {
+        return tmp<scalarField>::New(p0_);
+    }
+
+    const volScalarField& rho = db.lookupObject<volScalarField>(rhoName_);
+    const scalarField& rhop = rho.boundaryField()[patch().index()];
+    const scalarField rhoCells
+    (
+        rho.boundaryField()[patch().index()].patchInternalField()
+    );
+    const scalarField& phip =
+        patch().lookupPatchField<surfaceScalarField, scalar>(phiName_);
+    const vectorField& Up =
+        patch().lookupPatchField<volVectorField, vector>(UName_);
+
+    // The dynamic pressure of the inflow with the density of the face's
+    // cell, not the patch value of rho as prghTotalPressure takes it: that
+    // follows alpha's inletOutlet value of the last evaluation, the bulk's
+    // on a face that was closed, and a face reopened for air would then
+    // draw in air at a bulk's dynamic pressure. The feedback of the inflow
+    // on itself within one pressure solve is Co rho_patch/rho_cell, 1e3 for
+    // an air cell: a bin filled to the brim diverged within one corrector.
+    // The hydrostatic part keeps the patch value, as the gravity flux does
+    return
+        p0_
+      - 0.5*rhoCells*(1.0 - pos0(phip))*magSqr(Up)
+      - rhop*((g.value() & patch().Cf()) - ghRef);
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::prghBulkRetainingTotalPressureFvPatchScalarField::
+prghBulkRetainingTotalPressureFvPatchScalarField
+(
+    const fvPatch& p,
+    const DimensionedField<scalar, volMesh>& iF
+)
+:
+    mixedFvPatchScalarField(p, iF),
+    p0_(p.size(), Zero),
+    alphaName_("alpha.granular"),
+    rhoName_("rho"),
+    phiName_("phi"),
+    UName_("U"),
+    alphaMin_(1e-6)
+{
+    refValue() = Zero;
+    refGrad() = Zero;
+    valueFraction() = 1;
+}
+
+
+Foam::prghBulkRetainingTotalPressureFvPatchScalarField::
+prghBulkRetainingTotalPressureFvPatchScalarField
+(
+    const fvPatch& p,
+    const DimensionedField<scalar, volMesh>& iF,
+    const dictionary& dict
+)
+:
+    mixedFvPatchScalarField(p, iF),
+    p0_("p0", dict, p.size()),
+    alphaName_(dict.getOrDefault<word>("alpha", "alpha.granular")),
+    rhoName_(dict.getOrDefault<word>("rho", "rho")),
+    phiName_(dict.getOrDefault<word>("phi", "phi")),
+    UName_(dict.getOrDefault<word>("U", "U")),
+    alphaMin_(dict.getOrDefault<scalar>("alphaMin", 1e-6))
+{
+    // 0 would close faces over cells holding round-off bulk (MULES leaves
+    // 1e-20 in the air): the air there could not leave and the planar bin
+    // from the brim diverged
+    if (!(alphaMin_ > 0 && alphaMin_ < 1))
+    {
+        FatalIOErrorInFunction(dict)
+            << "'alphaMin " << alphaMin_ << "' on patch " << p.name()
+            << " of " << iF.name() << " must lie in (0, 1): the bulk"
+            << " fraction above which a cell's outflow face is closed"
+            << " (default 1e-6)" << nl << exit(FatalIOError);
+    }
+
+    // Open: the state decided at the first pressure corrector
+    refValue() = p0_;
+    refGrad() = Zero;
+    valueFraction() = 1;
+    if (dict.found("value"))
+    {
+        fvPatchScalarField::operator=(scalarField("value", dict, p.size()));
+    }
+    else
+    {
+        fvPatchScalarField::operator=(p0_);
+    }
+}
+
+
+Foam::prghBulkRetainingTotalPressureFvPatchScalarField::
+prghBulkRetainingTotalPressureFvPatchScalarField
+(
+    const prghBulkRetainingTotalPressureFvPatchScalarField& ptf,
+    const fvPatch& p,
+    const DimensionedField<scalar, volMesh>& iF,
+    const fvPatchFieldMapper& mapper
+)
+:
+    mixedFvPatchScalarField(ptf, p, iF, mapper),
+    p0_(ptf.p0_, mapper),
+    alphaName_(ptf.alphaName_),
+    rhoName_(ptf.rhoName_),
+    phiName_(ptf.phiName_),
+    UName_(ptf.UName_),
+    alphaMin_(ptf.alphaMin_)
+{}
+
+
+Foam::prghBulkRetainingTotalPressureFvPatchScalarField::
+prghBulkRetainingTotalPressureFvPatchScalarField
+(
+    const prghBulkRetainingTotalPressureFvPatchScalarField& ptf
+)
+:
+    mixedFvPatchScalarField(ptf),
+    p0_(ptf.p0_),
+    alphaName_(ptf.alphaName_),
+    rhoName_(ptf.rhoName_),
+    phiName_(ptf.phiName_),
+    UName_(ptf.UName_),
+    alphaMin_(ptf.alphaMin_)
+{}
+
+
+Foam::prghBulkRetainingTotalPressureFvPatchScalarField::
+prghBulkRetainingTotalPressureFvPatchScalarField
+(
+    const prghBulkRetainingTotalPressureFvPatchScalarField& ptf,
+    const DimensionedField<scalar, volMesh>& iF
+)
+:
+    mixedFvPatchScalarField(ptf, iF),
+    p0_(ptf.p0_),
+    alphaName_(ptf.alphaName_),
+    rhoName_(ptf.rhoName_),
+    phiName_(ptf.phiName_),
+    UName_(ptf.UName_),
+    alphaMin_(ptf.alphaMin_)
+{}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+Foam::label Foam::prghBulkRetainingTotalPressureFvPatchScalarField::retainBulk
+(
+    const scalarField& phiHbyAp,
+    const scalarField& rAUfp
+)
+{
+    const volScalarField& alpha =
+        db().lookupObject<volScalarField>(alphaName_);
+    const scalarField alphaCells
+    (
+        alpha.boundaryField()[patch().index()].patchInternalField()
+    );
+    const scalarField pCells(patchInternalField());
+    const scalarField pTotal(totalPressure());
+    const scalarField& magSf = patch().magSf();
+    const scalarField& deltaCoeffs = patch().deltaCoeffs();
+
+    scalarField& open = valueFraction();
+    label nClosed = 0;
+    forAll(open, facei)
+    {
+        // The flux the face would carry at the total pressure; leaving
+        // (> 0) from a cell that holds bulk, the face is a wall
+        const scalar phiOpen =
+            phiHbyAp[facei]
+          - rAUfp[facei]*magSf[facei]*deltaCoeffs[facei]
+           *(pTotal[facei] - pCells[facei]);
+        const bool closed = alphaCells[facei] > alphaMin_ && phiOpen > 0;
+        open[facei] = closed ? 0 : 1;
+        nClosed += closed;
+    }
+
+    refValue() = pTotal;
+
+    // Closed: the gradient that makes phiHbyA - rAUf |Sf| snGrad(p_rgh)
+    // zero (fixedFluxPressure's on a wall at rest)
+    refGrad() = phiHbyAp/(magSf*max(rAUfp, VSMALL));
+
+    mixedFvPatchScalarField::updateCoeffs();
+
+    return returnReduce(nClosed, sumOp<label>());
+}
+
+
+Foam::label Foam::prghBulkRetainingTotalPressureFvPatchScalarField::switchFaces
+(
+    const scalarField& phip
+)
+{
+    const volScalarField& alpha =
+        db().lookupObject<volScalarField>(alphaName_);
+    const scalarField alphaCells
+    (
+        alpha.boundaryField()[patch().index()].patchInternalField()
+    );
+    // The face values of the solved pressure: a closed face's is above the
+    // total pressure where opening it would let the flux out
+    const scalarField& pFaces = *this;
+
+    scalarField& open = valueFraction();
+    label nSwitched = 0;
+    forAll(open, facei)
+    {
+        if (open[facei] > 0.5)
+        {
+            if (phip[facei] > 0 && alphaCells[facei] > alphaMin_)
+            {
+                open[facei] = 0;
+                ++nSwitched;
+            }
+        }
+        else if (pFaces[facei] < refValue()[facei])
+        {
+            open[facei] = 1;
+            ++nSwitched;
+        }
+    }
+
+    return returnReduce(nSwitched, sumOp<label>());
+}
+
+
+void Foam::prghBulkRetainingTotalPressureFvPatchScalarField::autoMap
+(
+    const fvPatchFieldMapper& m
+)
+{
+    mixedFvPatchScalarField::autoMap(m);
+    p0_.autoMap(m);
+}
+
+
+void Foam::prghBulkRetainingTotalPressureFvPatchScalarField::rmap
+(
+    const fvPatchScalarField& ptf,
+    const labelList& addr
+)
+{
+    mixedFvPatchScalarField::rmap(ptf, addr);
+    p0_.rmap
+    (
+        refCast<const prghBulkRetainingTotalPressureFvPatchScalarField>
+        (
+            ptf
+        ).p0_,
+        addr
+    );
+}
+
+
+void Foam::prghBulkRetainingTotalPressureFvPatchScalarField::updateCoeffs()
+{
+    if (updated())
+    {
+        return;
+    }
+
+    refValue() = totalPressure();
+
+    mixedFvPatchScalarField::updateCoeffs();
+}
+
+
+void Foam::prghBulkRetainingTotalPressureFvPatchScalarField::write
+(
+    Ostream& os
+) const
+{
+    fvPatchScalarField::write(os);
+    p0_.writeEntry("p0", os);
+    os.writeEntryIfDifferent<word>("alpha", "alpha.granular", alphaName_);
+    os.writeEntryIfDifferent<word>("rho", "rho", rhoName_);
+    os.writeEntryIfDifferent<word>("phi", "phi", phiName_);
+    os.writeEntryIfDifferent<word>("U", "U", UName_);
+    os.writeEntryIfDifferent<scalar>("alphaMin", 1e-6, alphaMin_);
+    writeEntry("value", os);
+}
+
+
+// * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
+
+namespace Foam
+{
+    makePatchTypeField
+    (
+        fvPatchScalarField,
+        prghBulkRetainingTotalPressureFvPatchScalarField
+    );
+}
+
+// ************************************************************************* //
