@@ -8,7 +8,7 @@ silo3D_run()
     local dir="$1"; shift
     rm -rf "$dir"; mkdir -p "$dir"
     (cd "$projectDir/tutorials/silo3D" && cp -r 0.orig constant system Allrun Allclean \
-        writeSiloSTL plotOutletComposition renderMidPlane.py "$dir/")
+        writeSiloSTL plotOutletComposition renderMidPlane.py muI "$dir/")
     (cd "$dir" && ./Allrun "$@" > log.Allrun 2>&1) || { tail -30 "$dir/log.Allrun"; return 1; }
 }
 
@@ -44,4 +44,34 @@ test_silo3D_packing_bound()
     local dir="$workRoot/silo3DPackingBound"
     silo3D_run "$dir" -h 0.02 -endTime 20 -writeInterval 2 -serial -noRender || return 1
     python3 -m sdfoam.fieldStats "$dir" bounds --tol 1e-8 --packed 0.6
+}
+
+# The tutorial with the mu(I) bulk flow (Allrun -muI) on the coarse mesh
+# (h 20 mm) filled to the brim, 0.1 s on 2 ranks: every species within
+# [0, its total], the total at most 0.6 (1e-8) and equal to 0.6
+# alpha.granular (1e-8); the solids lost from the silo equal those through
+# the orifice and the top (1e-9 of the outflow), and through the top less
+# than 1e-5 of the orifice's (the open top closed to the bulk's outflow:
+# prghBulkRetainingTotalPressure)
+test_silo3D_muI()
+{
+    local dir="$workRoot/silo3DMuI"
+    silo3D_run "$dir" -muI -hFill 1 -h 0.02 -endTime 0.1 -writeInterval 0.05 -noRender || return 1
+    python3 -m sdfoam.fieldStats "$dir" bounds --tol 1e-8 --packed 0.6 || return 1
+    python3 -m sdfoam.fieldStats "$dir" inBulk --packed 0.6 --tol 1e-8 || return 1
+    python3 - "$dir" <<'PY'
+import re, sys
+case = sys.argv[1]
+total = [float(x) for x in re.findall(r"Solids: total volume (\S+)", open(case + "/log.segregationDegradationFoam").read())]
+def cumulative(patch):
+    rows = [l.split() for l in open(case + "/postProcessing/outletComposition/0/" + patch + ".dat") if not l.startswith("#")]
+    return [sum(float(x) for x in r[-2:]) / 2500 for r in rows]
+out, top = cumulative("outlet"), cumulative("top")
+initial = total[0] + out[0] + top[0]
+lost, left = initial - total[-1], out[-1] + top[-1]
+imbalance = abs(lost - left) / left
+print("silo3D muI from the brim, 2 ranks: solids lost %.6e m3 of %.4e; through the orifice %.6e, through the top %.3e (%.2e of the orifice's); imbalance %.2e"
+      % (lost, initial, out[-1], top[-1], top[-1] / out[-1], imbalance))
+sys.exit(0 if out[-1] > 0 and imbalance < 1e-9 and top[-1] < 1e-5 * out[-1] else 1)
+PY
 }

@@ -304,7 +304,7 @@ Foam::label Foam::bulkFlowModels::muI::retainBulk
 }
 
 
-Foam::label Foam::bulkFlowModels::muI::switchRetainingFaces()
+Foam::label Foam::bulkFlowModels::muI::switchRetainingFaces(const bool apply)
 {
     label nSwitched = 0;
     volScalarField::Boundary& p_rghBf = p_rgh_.boundaryFieldRef();
@@ -316,10 +316,26 @@ Foam::label Foam::bulkFlowModels::muI::switchRetainingFaces()
                 refCast<prghBulkRetainingTotalPressureFvPatchScalarField>
                 (
                     p_rghBf[patchi]
-                ).switchFaces(phi_.boundaryField()[patchi]);
+                ).switchFaces(phi_.boundaryField()[patchi], apply);
         }
     }
     return nSwitched;
+}
+
+
+void Foam::bulkFlowModels::muI::releaseRetainingFaces()
+{
+    const volScalarField::Boundary& p_rghBf = p_rgh_.boundaryField();
+    forAll(p_rghBf, patchi)
+    {
+        if (isA<prghBulkRetainingTotalPressureFvPatchScalarField>(p_rghBf[patchi]))
+        {
+            refCast<const prghBulkRetainingTotalPressureFvPatchScalarField>
+            (
+                p_rghBf[patchi]
+            ).releaseTotalPressure(phi_.boundaryFieldRef()[patchi]);
+        }
+    }
 }
 
 
@@ -466,23 +482,26 @@ void Foam::bulkFlowModels::muI::solveFlow()
                 }
             }
 
-            const label n = switchRetainingFaces();
-            nSwitched += n;
+            // At the last allowed solve the faces keep the state that was
+            // solved (the flux stays conservative; a few faces may carry
+            // bulk out this once)
+            const bool last = valveIter == maxValveIters;
+            const label n = switchRetainingFaces(!last);
             if (n == 0)
             {
                 break;
             }
-            if (valveIter == maxValveIters)
+            if (last)
             {
-                // The faces' state stays that of the last solve: the flux
-                // is conservative, a few faces may carry bulk out this once
                 WarningInFunction
                     << "the open top's faces still switched after "
                     << maxValveIters + 1 << " pressure solves (" << n
                     << " in the last)" << endl;
                 break;
             }
+            nSwitched += n;
         }
+        releaseRetainingFaces();
         if (nClosed || nSwitched)
         {
             Info<< "    muI: open top: " << nClosed << " face(s) closed to"

@@ -42,28 +42,16 @@ Foam::prghBulkRetainingTotalPressureFvPatchScalarField::totalPressure() const
         return tmp<scalarField>::New(p0_);
     }
 
-    const volScalarField& rho = db.lookupObject<volScalarField>(rhoName_);
-    const scalarField& rhop = rho.boundaryField()[patch().index()];
-    const scalarField rhoCells
-    (
-        rho.boundaryField()[patch().index()].patchInternalField()
-    );
+    const scalarField& rhop =
+        patch().lookupPatchField<volScalarField, scalar>(rhoName_);
     const scalarField& phip =
         patch().lookupPatchField<surfaceScalarField, scalar>(phiName_);
     const vectorField& Up =
         patch().lookupPatchField<volVectorField, vector>(UName_);
 
-    // The dynamic pressure of the inflow with the density of the face's
-    // cell, not the patch value of rho as prghTotalPressure takes it: that
-    // follows alpha's inletOutlet value of the last evaluation, the bulk's
-    // on a face that was closed, and a face reopened for air would then
-    // draw in air at a bulk's dynamic pressure. The feedback of the inflow
-    // on itself within one pressure solve is Co rho_patch/rho_cell, 1e3 for
-    // an air cell: a bin filled to the brim diverged within one corrector.
-    // The hydrostatic part keeps the patch value, as the gravity flux does
     return
         p0_
-      - 0.5*rhoCells*(1.0 - pos0(phip))*magSqr(Up)
+      - 0.5*rhop*(1.0 - pos0(phip))*magSqr(Up)
       - rhop*((g.value() & patch().Cf()) - ghRef);
 }
 
@@ -83,7 +71,8 @@ prghBulkRetainingTotalPressureFvPatchScalarField
     rhoName_("rho"),
     phiName_("phi"),
     UName_("U"),
-    alphaMin_(1e-6)
+    alphaMin_(1e-6),
+    totalPressureFrozen_(false)
 {
     refValue() = Zero;
     refGrad() = Zero;
@@ -105,7 +94,8 @@ prghBulkRetainingTotalPressureFvPatchScalarField
     rhoName_(dict.getOrDefault<word>("rho", "rho")),
     phiName_(dict.getOrDefault<word>("phi", "phi")),
     UName_(dict.getOrDefault<word>("U", "U")),
-    alphaMin_(dict.getOrDefault<scalar>("alphaMin", 1e-6))
+    alphaMin_(dict.getOrDefault<scalar>("alphaMin", 1e-6)),
+    totalPressureFrozen_(false)
 {
     // 0 would close faces over cells holding round-off bulk (MULES leaves
     // 1e-20 in the air): the air there could not leave and the planar bin
@@ -119,18 +109,15 @@ prghBulkRetainingTotalPressureFvPatchScalarField
             << " (default 1e-6)" << nl << exit(FatalIOError);
     }
 
-    // Open: the state decided at the first pressure corrector
-    refValue() = p0_;
+    // Open, at the written value (a restart: the total pressure, as
+    // prghTotalPressure's value, which the first momentum predictor's
+    // snGrad(p_rgh) takes); the state is decided at the first pressure
+    // corrector
+    refValue() =
+        dict.found("value") ? scalarField("value", dict, p.size()) : p0_;
     refGrad() = Zero;
     valueFraction() = 1;
-    if (dict.found("value"))
-    {
-        fvPatchScalarField::operator=(scalarField("value", dict, p.size()));
-    }
-    else
-    {
-        fvPatchScalarField::operator=(p0_);
-    }
+    fvPatchScalarField::operator=(refValue());
 }
 
 
@@ -149,7 +136,8 @@ prghBulkRetainingTotalPressureFvPatchScalarField
     rhoName_(ptf.rhoName_),
     phiName_(ptf.phiName_),
     UName_(ptf.UName_),
-    alphaMin_(ptf.alphaMin_)
+    alphaMin_(ptf.alphaMin_),
+    totalPressureFrozen_(false)
 {}
 
 
@@ -165,7 +153,8 @@ prghBulkRetainingTotalPressureFvPatchScalarField
     rhoName_(ptf.rhoName_),
     phiName_(ptf.phiName_),
     UName_(ptf.UName_),
-    alphaMin_(ptf.alphaMin_)
+    alphaMin_(ptf.alphaMin_),
+    totalPressureFrozen_(false)
 {}
 
 
@@ -182,7 +171,8 @@ prghBulkRetainingTotalPressureFvPatchScalarField
     rhoName_(ptf.rhoName_),
     phiName_(ptf.phiName_),
     UName_(ptf.UName_),
-    alphaMin_(ptf.alphaMin_)
+    alphaMin_(ptf.alphaMin_),
+    totalPressureFrozen_(false)
 {}
 
 
@@ -220,7 +210,10 @@ Foam::label Foam::prghBulkRetainingTotalPressureFvPatchScalarField::retainBulk
         nClosed += closed;
     }
 
+    // The total pressure stays that of this decision until releaseTotalPressure:
+    // the re-solves must answer the question the switches asked
     refValue() = pTotal;
+    totalPressureFrozen_ = true;
 
     // Closed: the gradient that makes phiHbyA - rAUf |Sf| snGrad(p_rgh)
     // zero (fixedFluxPressure's on a wall at rest)
@@ -234,7 +227,8 @@ Foam::label Foam::prghBulkRetainingTotalPressureFvPatchScalarField::retainBulk
 
 Foam::label Foam::prghBulkRetainingTotalPressureFvPatchScalarField::switchFaces
 (
-    const scalarField& phip
+    const scalarField& phip,
+    const bool apply
 )
 {
     const volScalarField& alpha =
@@ -243,30 +237,52 @@ Foam::label Foam::prghBulkRetainingTotalPressureFvPatchScalarField::switchFaces
     (
         alpha.boundaryField()[patch().index()].patchInternalField()
     );
-    // The face values of the solved pressure: a closed face's is above the
-    // total pressure where opening it would let the flux out
-    const scalarField& pFaces = *this;
+    // A closed face's pressure from the cell's and the closing gradient
+    // (not the evaluated face value, which a relaxation of p_rgh blends):
+    // above the total pressure, opening the face would let the flux out
+    const scalarField pClosed
+    (
+        patchInternalField() + refGrad()/patch().deltaCoeffs()
+    );
 
     scalarField& open = valueFraction();
     label nSwitched = 0;
     forAll(open, facei)
     {
-        if (open[facei] > 0.5)
+        const bool isOpen = open[facei] > 0.5;
+        const bool switches =
+            isOpen
+          ? phip[facei] > 0 && alphaCells[facei] > alphaMin_
+          : pClosed[facei] < refValue()[facei];
+        if (switches)
         {
-            if (phip[facei] > 0 && alphaCells[facei] > alphaMin_)
-            {
-                open[facei] = 0;
-                ++nSwitched;
-            }
-        }
-        else if (pFaces[facei] < refValue()[facei])
-        {
-            open[facei] = 1;
             ++nSwitched;
+            if (apply)
+            {
+                open[facei] = isOpen ? 0 : 1;
+            }
         }
     }
 
     return returnReduce(nSwitched, sumOp<label>());
+}
+
+
+void Foam::prghBulkRetainingTotalPressureFvPatchScalarField::
+releaseTotalPressure(scalarField& phip) const
+{
+    totalPressureFrozen_ = false;
+
+    // The closed faces' flux is phiHbyA less its own round-off: exactly
+    // zero, so that nothing downstream reads in- or outflow from its sign
+    const scalarField& open = valueFraction();
+    forAll(open, facei)
+    {
+        if (open[facei] < 0.5)
+        {
+            phip[facei] = 0;
+        }
+    }
 }
 
 
@@ -305,7 +321,10 @@ void Foam::prghBulkRetainingTotalPressureFvPatchScalarField::updateCoeffs()
         return;
     }
 
-    refValue() = totalPressure();
+    if (!totalPressureFrozen_)
+    {
+        refValue() = totalPressure();
+    }
 
     mixedFvPatchScalarField::updateCoeffs();
 }
