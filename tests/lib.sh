@@ -48,3 +48,18 @@ check_resumed_rerun()
     [ "$skipped" -eq "$stored" ] && [ "$ran" -eq $((total - stored)) ] \
         || { echo "rerun repeated or missed conditions"; return 1; }
 }
+
+# retaining_top_worked LOG: the open top closed faces to the bulk at some
+# step (so the test exercised prghBulkRetainingTotalPressure) and its
+# re-solves never reached their cap
+retaining_top_worked()
+{
+    local closed
+    closed=$(sed -n 's/.*muI: open top: \([0-9]*\) face(s) closed.*/\1/p' "$1" | sort -n | tail -1)
+    echo "open top: at most ${closed:-0} face(s) closed to the bulk in a corrector"
+    [ "${closed:-0}" -gt 0 ] || { echo "no face of the open top was ever closed"; return 1; }
+    if grep -q "still switched" "$1"
+    then
+        echo "the open top's re-solves reached their cap:"; grep -m3 "still switched" "$1"; return 1
+    fi
+}

@@ -508,6 +508,7 @@ for name in ("empty", "brim", "fines"):
     ok = ok and good
 sys.exit(0 if ok else 1)
 PY
+    retaining_top_worked "$dir/brim/log.segregationDegradationFoam" || return 1
     cp -r "$validationDir/planarSiloMuI" "$dir/narrow"
     if "$dir/narrow/Allrun" -dx 5e-3 -b 0.01 -W 0.16 -d 8e-3 -endTime 0.05 > "$dir/log.narrow" 2>&1
     then

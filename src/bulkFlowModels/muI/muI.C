@@ -325,12 +325,12 @@ Foam::label Foam::bulkFlowModels::muI::switchRetainingFaces(const bool apply)
 
 void Foam::bulkFlowModels::muI::releaseRetainingFaces()
 {
-    const volScalarField::Boundary& p_rghBf = p_rgh_.boundaryField();
+    volScalarField::Boundary& p_rghBf = p_rgh_.boundaryFieldRef();
     forAll(p_rghBf, patchi)
     {
         if (isA<prghBulkRetainingTotalPressureFvPatchScalarField>(p_rghBf[patchi]))
         {
-            refCast<const prghBulkRetainingTotalPressureFvPatchScalarField>
+            refCast<prghBulkRetainingTotalPressureFvPatchScalarField>
             (
                 p_rghBf[patchi]
             ).releaseTotalPressure(phi_.boundaryFieldRef()[patchi]);
@@ -448,6 +448,12 @@ void Foam::bulkFlowModels::muI::solveFlow()
         label nSwitched = 0;
         for (label valveIter = 0; ; ++valveIter)
         {
+            // At the last allowed solve the faces keep the state that was
+            // solved (the flux stays conservative; a few faces may carry
+            // bulk out this once)
+            const bool last = valveIter == maxValveIters;
+            label n = 0;
+
             while (pimple_.correctNonOrthogonal())
             {
                 fvScalarMatrix p_rghEqn
@@ -467,6 +473,8 @@ void Foam::bulkFlowModels::muI::solveFlow()
                 if (pimple_.finalNonOrthogonalIter())
                 {
                     phi_ = phiHbyA - p_rghEqn.flux();
+                    // On the solved pressure, before its relaxation
+                    n = switchRetainingFaces(!last);
                     p_rgh_.relax();
                     if (cellGradientForces_)
                     {
@@ -482,11 +490,6 @@ void Foam::bulkFlowModels::muI::solveFlow()
                 }
             }
 
-            // At the last allowed solve the faces keep the state that was
-            // solved (the flux stays conservative; a few faces may carry
-            // bulk out this once)
-            const bool last = valveIter == maxValveIters;
-            const label n = switchRetainingFaces(!last);
             if (n == 0)
             {
                 break;
@@ -502,6 +505,9 @@ void Foam::bulkFlowModels::muI::solveFlow()
             nSwitched += n;
         }
         releaseRetainingFaces();
+        // U's open-patch conditions read the flux's sign: the closed faces'
+        // is now exactly zero
+        U_.correctBoundaryConditions();
         if (nClosed || nSwitched)
         {
             Info<< "    muI: open top: " << nClosed << " face(s) closed to"

@@ -210,8 +210,9 @@ Foam::label Foam::prghBulkRetainingTotalPressureFvPatchScalarField::retainBulk
         nClosed += closed;
     }
 
-    // The total pressure stays that of this decision until releaseTotalPressure:
-    // the re-solves must answer the question the switches asked
+    // The total pressure stays that of this decision until
+    // releaseTotalPressure: the re-solves must answer the question the
+    // switches asked
     refValue() = pTotal;
     totalPressureFrozen_ = true;
 
@@ -238,8 +239,8 @@ Foam::label Foam::prghBulkRetainingTotalPressureFvPatchScalarField::switchFaces
         alpha.boundaryField()[patch().index()].patchInternalField()
     );
     // A closed face's pressure from the cell's and the closing gradient
-    // (not the evaluated face value, which a relaxation of p_rgh blends):
-    // above the total pressure, opening the face would let the flux out
+    // (called on the solved pressure, before its relaxation): above the
+    // total pressure, opening the face would let the flux out
     const scalarField pClosed
     (
         patchInternalField() + refGrad()/patch().deltaCoeffs()
@@ -269,7 +270,7 @@ Foam::label Foam::prghBulkRetainingTotalPressureFvPatchScalarField::switchFaces
 
 
 void Foam::prghBulkRetainingTotalPressureFvPatchScalarField::
-releaseTotalPressure(scalarField& phip) const
+releaseTotalPressure(scalarField& phip)
 {
     totalPressureFrozen_ = false;
 
