@@ -277,6 +277,25 @@ Foam::bulkFlowModels::muI::cellForce() const
 }
 
 
+template<class Action>
+void Foam::bulkFlowModels::muI::forEachRetainingPatch(const Action& action)
+{
+    volScalarField::Boundary& p_rghBf = p_rgh_.boundaryFieldRef();
+    forAll(p_rghBf, patchi)
+    {
+        auto* retaining =
+            dynamic_cast<prghBulkRetainingTotalPressureFvPatchScalarField*>
+            (
+                &p_rghBf[patchi]
+            );
+        if (retaining)
+        {
+            action(*retaining, patchi);
+        }
+    }
+}
+
+
 Foam::label Foam::bulkFlowModels::muI::retainBulk
 (
     const surfaceScalarField& phiHbyA,
@@ -284,22 +303,18 @@ Foam::label Foam::bulkFlowModels::muI::retainBulk
 )
 {
     label nClosed = 0;
-    volScalarField::Boundary& p_rghBf = p_rgh_.boundaryFieldRef();
-    forAll(p_rghBf, patchi)
-    {
-        if (isA<prghBulkRetainingTotalPressureFvPatchScalarField>(p_rghBf[patchi]))
+    forEachRetainingPatch
+    (
+        [&](prghBulkRetainingTotalPressureFvPatchScalarField& top, label i)
         {
             nClosed +=
-                refCast<prghBulkRetainingTotalPressureFvPatchScalarField>
+                top.retainBulk
                 (
-                    p_rghBf[patchi]
-                ).retainBulk
-                (
-                    phiHbyA.boundaryField()[patchi],
-                    rAUf.boundaryField()[patchi]
+                    phiHbyA.boundaryField()[i],
+                    rAUf.boundaryField()[i]
                 );
         }
-    }
+    );
     return nClosed;
 }
 
@@ -307,35 +322,26 @@ Foam::label Foam::bulkFlowModels::muI::retainBulk
 Foam::label Foam::bulkFlowModels::muI::switchRetainingFaces(const bool apply)
 {
     label nSwitched = 0;
-    volScalarField::Boundary& p_rghBf = p_rgh_.boundaryFieldRef();
-    forAll(p_rghBf, patchi)
-    {
-        if (isA<prghBulkRetainingTotalPressureFvPatchScalarField>(p_rghBf[patchi]))
+    forEachRetainingPatch
+    (
+        [&](prghBulkRetainingTotalPressureFvPatchScalarField& top, label i)
         {
-            nSwitched +=
-                refCast<prghBulkRetainingTotalPressureFvPatchScalarField>
-                (
-                    p_rghBf[patchi]
-                ).switchFaces(phi_.boundaryField()[patchi], apply);
+            nSwitched += top.switchFaces(phi_.boundaryField()[i], apply);
         }
-    }
+    );
     return nSwitched;
 }
 
 
 void Foam::bulkFlowModels::muI::releaseRetainingFaces()
 {
-    volScalarField::Boundary& p_rghBf = p_rgh_.boundaryFieldRef();
-    forAll(p_rghBf, patchi)
-    {
-        if (isA<prghBulkRetainingTotalPressureFvPatchScalarField>(p_rghBf[patchi]))
+    forEachRetainingPatch
+    (
+        [&](prghBulkRetainingTotalPressureFvPatchScalarField& top, label i)
         {
-            refCast<prghBulkRetainingTotalPressureFvPatchScalarField>
-            (
-                p_rghBf[patchi]
-            ).releaseTotalPressure(phi_.boundaryFieldRef()[patchi]);
+            top.releaseTotalPressure(phi_.boundaryFieldRef()[i]);
         }
-    }
+    );
 }
 
 

@@ -56,6 +56,25 @@ Foam::prghBulkRetainingTotalPressureFvPatchScalarField::totalPressure() const
 }
 
 
+Foam::boolList
+Foam::prghBulkRetainingTotalPressureFvPatchScalarField::cellsHoldBulk() const
+{
+    const volScalarField& alpha =
+        db().lookupObject<volScalarField>(alphaName_);
+    const scalarField alphaCells
+    (
+        alpha.boundaryField()[patch().index()].patchInternalField()
+    );
+
+    boolList holdsBulk(alphaCells.size());
+    forAll(alphaCells, facei)
+    {
+        holdsBulk[facei] = alphaCells[facei] > alphaMin_;
+    }
+    return holdsBulk;
+}
+
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::prghBulkRetainingTotalPressureFvPatchScalarField::
@@ -184,12 +203,7 @@ Foam::label Foam::prghBulkRetainingTotalPressureFvPatchScalarField::retainBulk
     const scalarField& rAUfp
 )
 {
-    const volScalarField& alpha =
-        db().lookupObject<volScalarField>(alphaName_);
-    const scalarField alphaCells
-    (
-        alpha.boundaryField()[patch().index()].patchInternalField()
-    );
+    const boolList holdsBulk(cellsHoldBulk());
     const scalarField pCells(patchInternalField());
     const scalarField pTotal(totalPressure());
     const scalarField& magSf = patch().magSf();
@@ -205,7 +219,7 @@ Foam::label Foam::prghBulkRetainingTotalPressureFvPatchScalarField::retainBulk
             phiHbyAp[facei]
           - rAUfp[facei]*magSf[facei]*deltaCoeffs[facei]
            *(pTotal[facei] - pCells[facei]);
-        const bool closed = alphaCells[facei] > alphaMin_ && phiOpen > 0;
+        const bool closed = holdsBulk[facei] && phiOpen > 0;
         open[facei] = closed ? 0 : 1;
         nClosed += closed;
     }
@@ -232,12 +246,7 @@ Foam::label Foam::prghBulkRetainingTotalPressureFvPatchScalarField::switchFaces
     const bool apply
 )
 {
-    const volScalarField& alpha =
-        db().lookupObject<volScalarField>(alphaName_);
-    const scalarField alphaCells
-    (
-        alpha.boundaryField()[patch().index()].patchInternalField()
-    );
+    const boolList holdsBulk(cellsHoldBulk());
     // A closed face's pressure from the cell's and the closing gradient
     // (called on the solved pressure, before its relaxation): above the
     // total pressure, opening the face would let the flux out
@@ -253,7 +262,7 @@ Foam::label Foam::prghBulkRetainingTotalPressureFvPatchScalarField::switchFaces
         const bool isOpen = open[facei] > 0.5;
         const bool switches =
             isOpen
-          ? phip[facei] > 0 && alphaCells[facei] > alphaMin_
+          ? phip[facei] > 0 && holdsBulk[facei]
           : pClosed[facei] < refValue()[facei];
         if (switches)
         {
