@@ -13,6 +13,24 @@ test_chute_tvd()
     "$dir/grayThorntonChute/Allrun" -n 40 -div "Gauss vanLeer01" -reconstruct vanLeer -tol 0.02
 }
 
+# A layer of uniform shear with the shear-rate closures (percolation and
+# diffusivity shearRate): the exact steady profile to 4e-3 on 50 cells and
+# 1e-3 on 100 (second order), the fines and the solids kept to 1e-10, and
+# the same profile at four times the shear rate (to 1e-10): the closures'
+# shear rate cancels (validation/uniformShearColumn/check)
+test_uniform_shear_column()
+{
+    local dir="$workRoot/uniformShearColumn"
+    rm -rf "$dir"; mkdir -p "$dir"
+    cp -r "$validationDir/uniformShearColumn" "$dir/"
+    local case="$dir/uniformShearColumn"
+    "$case/Allrun" -n 50 -gammaDot 100 -tol 4e-3 || return 1
+    cp "$case/results/profile.dat" "$dir/profile100.dat"
+    "$case/Allrun" -n 50 -gammaDot 400 -tol 4e-3 || return 1
+    "$case/check" --same-as "$dir/profile100.dat" --tol-same 1e-10 || return 1
+    "$case/Allrun" -n 100 -gammaDot 100 -tol 1e-3
+}
+
 test_convergence_study()
 {
     validation/convergenceStudy --no-docs --work "$workRoot/validation"
