@@ -853,11 +853,79 @@ Foam::bulkFlowModels::muI::muI
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
+void Foam::bulkFlowModels::muI::checkFillOverflow()
+{
+    const fvMesh& mesh = mixture_.mesh();
+
+    // Bulk entering through the boundary in this step, and where (the
+    // patches bringing at least 1e-3 of it: not MULES's round-off traces)
+    scalar inflow = 0;
+    List<Tuple2<word, scalar>> patchInflows;
+    forAll(alphaPhi_.boundaryField(), patchi)
+    {
+        const fvsPatchScalarField& alphaPhip = alphaPhi_.boundaryField()[patchi];
+        if (alphaPhip.coupled())
+        {
+            continue;
+        }
+        const scalar patchInflow = -gSum(min(alphaPhip, scalar(0)));
+        if (patchInflow > 0)
+        {
+            inflow += patchInflow;
+            patchInflows.append
+            (
+                Tuple2<word, scalar>(mesh.boundary()[patchi].name(), patchInflow)
+            );
+        }
+    }
+    if (!(inflow > 0))
+    {
+        return;
+    }
+    string inlets;
+    for (const auto& entry : patchInflows)
+    {
+        if (entry.second() >= 1e-3*inflow)
+        {
+            inlets += (inlets.empty() ? "" : " ") + entry.first();
+        }
+    }
+
+    // The fullest cell at the open top
+    scalar alphaTop = 0;
+    string tops;
+    forEachRetainingPatch
+    (
+        [&](prghBulkRetainingTotalPressureFvPatchScalarField&, label i)
+        {
+            tops += (tops.empty() ? "" : " ") + mesh.boundary()[i].name();
+            alphaTop =
+                max(alphaTop, gMax(alpha_.boundaryField()[i].patchInternalField()()));
+        }
+    );
+    reduce(alphaTop, maxOp<scalar>());
+    if (alphaTop > 0.5)
+    {
+        FatalErrorInFunction
+            << "The fill overflows the bin: the bulk has reached the open"
+            << " top (" << tops.c_str() << ") (alpha.granular "
+            << alphaTop << " in a cell next to it) at time "
+            << mesh.time().timeName() << " while " << inflow
+            << " m3/s of bulk still enters through (" << inlets.c_str()
+            << ")." << nl
+            << "    End the fill earlier (system/controlDict endTime), lower"
+            << " the inlet's rate or the fill time, or make the bin taller."
+            << exit(FatalError);
+    }
+}
+
+
 void Foam::bulkFlowModels::muI::correct()
 {
     while (pimple_.loop())
     {
         solveAlpha();
+        checkFillOverflow();
         updateViscosity();
         solveFlow();
     }

@@ -214,15 +214,51 @@ void Foam::speciesAdvection::correctCompositions()
     }
 
     // Cells without solids take the mean composition of the solids in the
-    // domain (a species absent everywhere stays absent)
+    // domain (a species absent everywhere stays absent); in a domain without
+    // solids (a bin before its fill), that of the fixed values on the
+    // boundary (the feed), else 1/N
     const scalar total = gSum(sum*V);
+    scalarList mean(n.size(), 1.0/n.size());
+    if (total > VSMALL)
+    {
+        forAll(n, k)
+        {
+            mean[k] = gSum(max(n[k].primitiveField(), scalar(0))*V)/total;
+        }
+    }
+    else
+    {
+        const surfaceScalarField::Boundary& magSfb =
+            mixture_.mesh().magSf().boundaryField();
+        scalarList fixedTotal(n.size(), Zero);
+        forAll(n[0].boundaryField(), patchi)
+        {
+            if (composition_[0].boundaryField()[patchi].fixesValue())
+            {
+                forAll(n, k)
+                {
+                    fixedTotal[k] += gSum
+                    (
+                        max(n[k].boundaryField()[patchi], scalar(0))
+                       *magSfb[patchi]
+                    );
+                }
+            }
+        }
+        const scalar fixedSum = Foam::sum(fixedTotal);
+        if (fixedSum > VSMALL)
+        {
+            forAll(n, k)
+            {
+                mean[k] = fixedTotal[k]/fixedSum;
+            }
+        }
+    }
 
-    scalarList mean(n.size());
     forAll(n, k)
     {
         scalarField& c = composition_[k].primitiveFieldRef();
         const scalarField nk(max(n[k].primitiveField(), scalar(0)));
-        mean[k] = total > VSMALL ? gSum(nk*V)/total : 1.0/n.size();
         forAll(c, celli)
         {
             c[celli] = sum[celli] > VSMALL ? nk[celli]/sum[celli] : mean[k];
