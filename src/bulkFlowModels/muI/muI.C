@@ -419,10 +419,25 @@ void Foam::bulkFlowModels::muI::solveFlow()
         // here is the inertia rho/deltaT. The face forces of the last
         // pressure move to HbyA with the difference, so the converged flow
         // is the same
+        // The floor applies to the cells only: the boundary keeps rAU's
+        // values (coupled patches take their neighbours'). Floored on the
+        // boundary too, with the boundary's density, an inlet of bulk into
+        // a cell of air (rho_b/rho_P up to 1e3) got rAtU_b < rAU_b, and
+        // fixedFluxPressure's gradient, which moves with the face force
+        // (rAUf - rAtUf) into phiHbyA, grew by rAUf_b/rAtUf_b - 1 (about 7)
+        // per corrector there until the fill blew up
         volScalarField rAtU("rAtU", rAU);
         if (pimple_.consistent())
         {
-            rAtU = 1.0/max(1.0/rAU - UEqn.H1(), rho_/mesh.time().deltaT());
+            const volScalarField::Internal A(1.0/rAU.internalField());
+            rAtU.primitiveFieldRef() =
+                1.0
+               /max
+                (
+                    A - UEqn.H1()().internalField(),
+                    rho_.internalField()/mesh.time().deltaT()
+                );
+            rAtU.correctBoundaryConditions();
             const surfaceScalarField faceForce
             (
                 gravityFlux - fvc::snGrad(p_rgh_)*mesh.magSf()
