@@ -94,6 +94,67 @@ Foam::scalar positiveEntry
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
+Foam::tmp<Foam::surfaceScalarField>
+Foam::bulkFlowModels::muI::settlingFlux() const
+{
+    const fvMesh& mesh = mixture_.mesh();
+    tmp<surfaceScalarField> tflux
+    (
+        surfaceScalarField::New
+        (
+            "settlingFlux",
+            mesh,
+            dimensionedScalar(dimVolume/dimTime, Zero)
+        )
+    );
+    surfaceScalarField& flux = tflux.ref();
+    const vector gHat(mixture_.gravity()/mag(mixture_.gravity()));
+
+    // F = w (gHat.Sf) alpha_up (1 - alpha_down): positive (owner to
+    // neighbour) where Sf points down, so the owner is the upper cell
+    auto faceFlux = [this, &gHat]
+    (
+        const vector& Sf,
+        const scalar alphaOwn,
+        const scalar alphaNei
+    )
+    {
+        const scalar gSf = gHat & Sf;
+        return
+            gSf > 0
+          ? settlingVelocity_*gSf*alphaOwn*(1 - alphaNei)
+          : settlingVelocity_*gSf*alphaNei*(1 - alphaOwn);
+    };
+
+    const labelUList& own = mesh.owner();
+    const labelUList& nei = mesh.neighbour();
+    const vectorField& Sf = mesh.Sf();
+    forAll(own, facei)
+    {
+        flux[facei] =
+            faceFlux(Sf[facei], alpha_[own[facei]], alpha_[nei[facei]]);
+    }
+    forAll(flux.boundaryField(), patchi)
+    {
+        const fvPatchScalarField& alphap = alpha_.boundaryField()[patchi];
+        if (!alphap.coupled())
+        {
+            continue;
+        }
+        const scalarField alphaOwn(alphap.patchInternalField());
+        const scalarField alphaNei(alphap.patchNeighbourField());
+        const vectorField& Sfp = mesh.Sf().boundaryField()[patchi];
+        scalarField& fluxp = flux.boundaryFieldRef()[patchi];
+        forAll(fluxp, facei)
+        {
+            fluxp[facei] =
+                faceFlux(Sfp[facei], alphaOwn[facei], alphaNei[facei]);
+        }
+    }
+    return tflux;
+}
+
+
 void Foam::bulkFlowModels::muI::advectAlpha()
 {
     const fvMesh& mesh = mixture_.mesh();
@@ -144,6 +205,10 @@ void Foam::bulkFlowModels::muI::advectAlpha()
                 alpha_,
                 "div(phirb,alpha)"
             );
+        if (settlingVelocity_ > 0)
+        {
+            alphaPhi_ += settlingFlux();
+        }
 
         // Upwind on the non-coupled boundaries: out with the cell's value,
         // in with the boundary's
@@ -194,10 +259,15 @@ void Foam::bulkFlowModels::muI::solveAlpha()
             << "'maxAlphaCo " << maxAlphaCo << "' must be > 0" << nl
             << exit(FatalIOError);
     }
+    // (with the settling speed's share of each face)
     const scalar alphaCo =
         0.5*gMax
         (
-            fvc::surfaceSum(mag(phi_))().primitiveField()/mesh.V().field()
+            fvc::surfaceSum
+            (
+                mag(phi_)
+              + dimensionedScalar("w", dimVelocity, settlingVelocity_)*mesh.magSf()
+            )().primitiveField()/mesh.V().field()
         )*mesh.time().deltaTValue();
     const label nSub = max
     (
@@ -574,7 +644,7 @@ Foam::bulkFlowModels::muI::muI
             {
                 "mu_s", "mu_d", "I_0", "regularised", "d", "rhoS",
                 "packedFraction", "etaMax", "pMin", "rhoAir", "muAir",
-                "outletPatches", "forces"
+                "outletPatches", "forces", "settlingVelocity"
             }
         ),
         mixture,
@@ -588,6 +658,13 @@ Foam::bulkFlowModels::muI::muI
     pMin_(positiveEntry(coeffs_, "pMin", dimPressure, 1)),
     rhoAir_(positiveEntry(coeffs_, "rhoAir", dimDensity, 1.2)),
     muAir_(positiveEntry(coeffs_, "muAir", dimDynamicViscosity, 1.8e-5)),
+    settlingVelocity_
+    (
+        modelCoeffs::getOrDefault
+        (
+            coeffs_, "settlingVelocity", dimVelocity, 0
+        ).value()
+    ),
     pimple_(const_cast<fvMesh&>(mixture.mesh())),
     alpha_(readField(mixture.mesh(), "alpha.granular"), mixture.mesh()),
     p_rgh_(readField(mixture.mesh(), "p_rgh"), mixture.mesh()),
@@ -698,6 +775,13 @@ Foam::bulkFlowModels::muI::muI
     }
 
     // Optional, default faceFlux (interFoam's)
+    if (!(settlingVelocity_ >= 0))
+    {
+        FatalIOErrorInFunction(coeffs_)
+            << "'settlingVelocity " << settlingVelocity_ << "' must be >= 0"
+            << " [m/s] (0: the bulk does not settle through the air)" << nl
+            << exit(FatalIOError);
+    }
     const word forces(coeffs_.getOrDefault<word>("forces", "faceFlux"));
     if (forces != "faceFlux" && forces != "cellGradient")
     {
@@ -861,7 +945,8 @@ Foam::bulkFlowModels::muI::muI
         << (law_.regularised() ? law_.IN() : 0) << "; d " << d_
         << " m, rho_s " << rhoS_ << " kg/m3, bulk solids fraction "
         << packedFraction_ << ", eta <= " << etaMax_ << " Pa s, p >= "
-        << pMin_ << " Pa; gravity " << gHydrostatic << " hydrostatic + "
+        << pMin_ << " Pa; settling through air " << settlingVelocity_
+        << " m/s; gravity " << gHydrostatic << " hydrostatic + "
         << gPeriodic_ << " periodic" << nl << endl;
 }
 
