@@ -143,7 +143,7 @@ PY
 
 # The fill's extremes: a single-species feed (no coarse appears anywhere); a
 # feed of pure coarse onto a bed of fines (each species' balance to 5e-8:
-# 1.9e-8 measured, the total to 1e-11); no feed
+# 1.2e-8 measured; the solids' to 1e-10, as every run's check); no feed
 # (nothing enters, nothing moves: exactly 0 solids); a fill that overflows
 # the bin (a FatalError naming the open top and the inlet, no field with a
 # NaN written)

@@ -112,7 +112,7 @@ Foam::bulkFlowModels::muI::settlingFlux() const
 
     // F = w (gHat.Sf) alpha_up (1 - alpha_down): positive (owner to
     // neighbour) where Sf points down, so the owner is the upper cell
-    auto faceFlux = [this, &gHat]
+    auto settlingFaceFlux = [this, &gHat]
     (
         const vector& Sf,
         const scalar alphaOwn,
@@ -132,7 +132,10 @@ Foam::bulkFlowModels::muI::settlingFlux() const
     forAll(own, facei)
     {
         flux[facei] =
-            faceFlux(Sf[facei], alpha_[own[facei]], alpha_[nei[facei]]);
+            settlingFaceFlux
+            (
+                Sf[facei], alpha_[own[facei]], alpha_[nei[facei]]
+            );
     }
     forAll(flux.boundaryField(), patchi)
     {
@@ -148,7 +151,10 @@ Foam::bulkFlowModels::muI::settlingFlux() const
         forAll(fluxp, facei)
         {
             fluxp[facei] =
-                faceFlux(Sfp[facei], alphaOwn[facei], alphaNei[facei]);
+                settlingFaceFlux
+                (
+                    Sfp[facei], alphaOwn[facei], alphaNei[facei]
+                );
         }
     }
     return tflux;
@@ -489,10 +495,11 @@ void Foam::bulkFlowModels::muI::solveFlow()
         // here is the inertia rho/deltaT. The face forces of the last
         // pressure move to HbyA with the difference, so the converged flow
         // is the same
-        // The floor applies to the cells only: the boundary keeps rAU's
-        // values (coupled patches take their neighbours'). Floored on the
-        // boundary too, with the boundary's density, an inlet of bulk into
-        // a cell of air (rho_b/rho_P up to 1e3) got rAtU_b < rAU_b, and
+        // The floor uses the cells' density; the boundary takes the cells'
+        // values (rAU's patches extrapolate, coupled ones take their
+        // neighbours'), so rAtU_b >= rAU_b as in the cells. Floored on the
+        // boundary with the boundary's density, an inlet of bulk into a
+        // cell of air (rho_b/rho_P up to 1e3) got rAtU_b < rAU_b, and
         // fixedFluxPressure's gradient, which moves with the face force
         // (rAUf - rAtUf) into phiHbyA, grew by rAUf_b/rAtUf_b - 1 (about 7)
         // per corrector there until the fill blew up
@@ -774,7 +781,7 @@ Foam::bulkFlowModels::muI::muI
             << " (0, 1]" << nl << exit(FatalIOError);
     }
 
-    // Optional, default faceFlux (interFoam's)
+    // Optional, default 0: a negative speed would lift bulk out of air
     if (!(settlingVelocity_ >= 0))
     {
         FatalIOErrorInFunction(coeffs_)
@@ -782,6 +789,8 @@ Foam::bulkFlowModels::muI::muI
             << " [m/s] (0: the bulk does not settle through the air)" << nl
             << exit(FatalIOError);
     }
+
+    // Optional, default faceFlux (interFoam's)
     const word forces(coeffs_.getOrDefault<word>("forces", "faceFlux"));
     if (forces != "faceFlux" && forces != "cellGradient")
     {
@@ -983,11 +992,11 @@ void Foam::bulkFlowModels::muI::checkFillOverflow()
         return;
     }
     string inlets;
-    for (const auto& entry : patchInflows)
+    for (const auto& patchInflow : patchInflows)
     {
-        if (entry.second() >= 1e-3*inflow)
+        if (patchInflow.second() >= 1e-3*inflow)
         {
-            inlets += (inlets.empty() ? "" : " ") + entry.first();
+            inlets += (inlets.empty() ? "" : " ") + patchInflow.first();
         }
     }
 
@@ -1003,7 +1012,6 @@ void Foam::bulkFlowModels::muI::checkFillOverflow()
                 max(alphaTop, gMax(alpha_.boundaryField()[i].patchInternalField()()));
         }
     );
-    reduce(alphaTop, maxOp<scalar>());
     if (alphaTop > 0.5)
     {
         FatalErrorInFunction

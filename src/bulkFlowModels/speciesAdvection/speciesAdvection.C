@@ -228,22 +228,40 @@ void Foam::speciesAdvection::correctCompositions()
     }
     else
     {
+        // Weighted by each face's inflow; by its area where nothing flows
+        // in yet
+        const surfaceScalarField::Boundary& phib = bulkFlow_.phi().boundaryField();
         const surfaceScalarField::Boundary& magSfb =
             mixture_.mesh().magSf().boundaryField();
-        scalarList fixedTotal(n.size(), Zero);
-        forAll(n[0].boundaryField(), patchi)
+        auto fixedComposition = [&](const bool byInflow)
         {
-            if (composition_[0].boundaryField()[patchi].fixesValue())
+            scalarList fixedTotal(n.size(), Zero);
+            forAll(n[0].boundaryField(), patchi)
             {
+                if (!composition_[0].boundaryField()[patchi].fixesValue())
+                {
+                    continue;
+                }
+                const scalarField weight
+                (
+                    byInflow
+                  ? scalarField(max(-phib[patchi], scalar(0)))
+                  : scalarField(magSfb[patchi])
+                );
                 forAll(n, k)
                 {
                     fixedTotal[k] += gSum
                     (
-                        max(n[k].boundaryField()[patchi], scalar(0))
-                       *magSfb[patchi]
+                        max(n[k].boundaryField()[patchi], scalar(0))*weight
                     );
                 }
             }
+            return fixedTotal;
+        };
+        scalarList fixedTotal(fixedComposition(true));
+        if (!(Foam::sum(fixedTotal) > VSMALL))
+        {
+            fixedTotal = fixedComposition(false);
         }
         const scalar fixedSum = Foam::sum(fixedTotal);
         if (fixedSum > VSMALL)

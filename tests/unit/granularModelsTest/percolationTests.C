@@ -56,7 +56,7 @@ TEST(percolation, grayThorntonDriftAlongGravity)
 // The shear-rate percolation on the prescribed shear U = (gammaDot0 z, 0, 0):
 // S gammaDot0 (g/|g|).Sf on interior faces, S = C_s d_s ln(d_l/d_s), zero on
 // walls; a negative C_s refused
-TEST(percolation, shearRateDriftScalesWithShearRate)
+TEST(percolation, shearRateDriftAlongGravity)
 {
     setFields(0.48, 0.12);
     autoPtr<bulkFlowModel> flow
