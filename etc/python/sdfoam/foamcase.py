@@ -14,7 +14,7 @@ import re
 __all__ = [
     "timeDirs", "latestTime", "readScalarField", "readVectorField",
     "cellCentres", "errorNorms", "observedOrder", "writeColumns",
-    "stripComments", "nCells",
+    "readColumns", "stripComments", "nCells",
 ]
 
 
@@ -258,3 +258,15 @@ def writeColumns(path, header, rows):
         f.write("# " + " ".join(header) + "\n")
         for r in rows:
             f.write(" ".join("%.12g" % v for v in r) + "\n")
+
+
+def readColumns(path):
+    """The rows of a text table as writeColumns writes it (and the DEM
+    peer's files): lists of floats, '#' lines and blank lines skipped."""
+    rows = []
+    with open(path) as f:
+        for line in f:
+            if line.startswith("#") or not line.strip():
+                continue
+            rows.append([float(v) for v in line.split()])
+    return rows

@@ -37,4 +37,24 @@ void Foam::pairwiseDrift::zeroUncoupledPatches(surfaceScalarField& W)
 }
 
 
+Foam::tmp<Foam::surfaceScalarField> Foam::pairwiseDrift::gravityFaceAreas
+(
+    const granularMixture& mixture
+)
+{
+    const fvMesh& mesh = mixture.mesh();
+    const vector gHat(mixture.gravity()/mag(mixture.gravity()));
+    tmp<surfaceScalarField> tgSf
+    (
+        surfaceScalarField::New
+        (
+            "gSf",
+            mesh.Sf() & dimensionedVector("gHat", dimless, gHat)
+        )
+    );
+    zeroUncoupledPatches(tgSf.ref());
+    return tgSf;
+}
+
+
 // ************************************************************************* //

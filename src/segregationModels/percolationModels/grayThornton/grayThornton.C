@@ -34,20 +34,7 @@ Foam::percolationModels::grayThornton::grayThornton
         mixture
     ),
     Sr_(modelCoeffs::get(coeffs_, "Sr", dimVelocity).value()),
-    gSf_
-    (
-        IOobject
-        (
-            "gSf",
-            mixture.mesh().time().timeName(),
-            mixture.mesh(),
-            IOobject::NO_READ,
-            IOobject::NO_WRITE,
-            false
-        ),
-        mixture.mesh(),
-        dimensionedScalar("s", dimArea, Zero)
-    )
+    gSf_(gravityFaceAreas(mixture))
 {
     if (!(Sr_ >= 0))
     {
@@ -55,11 +42,6 @@ Foam::percolationModels::grayThornton::grayThornton
             << "Percolation velocity 'Sr " << Sr_ << "' must be >= 0 [m/s]"
             << nl << exit(FatalIOError);
     }
-
-    const fvMesh& mesh = mixture.mesh();
-    const vector gHat(mixture.gravity()/mag(mixture.gravity()));
-    gSf_ = mesh.Sf() & dimensionedVector("gHat", dimless, gHat);
-    zeroUncoupledPatches(gSf_);
 }
 
 

@@ -41,20 +41,7 @@ Foam::percolationModels::shearRatePercolation::shearRatePercolation
     ),
     Cs_(modelCoeffs::get(coeffs_, "C_s", dimless).value()),
     bulkFlow_(bulkFlow),
-    gSf_
-    (
-        IOobject
-        (
-            "gSf",
-            mixture.mesh().time().timeName(),
-            mixture.mesh(),
-            IOobject::NO_READ,
-            IOobject::NO_WRITE,
-            false
-        ),
-        mixture.mesh(),
-        dimensionedScalar("s", dimArea, Zero)
-    ),
+    gSf_(gravityFaceAreas(mixture)),
     gammaDotf_
     (
         IOobject
@@ -76,10 +63,6 @@ Foam::percolationModels::shearRatePercolation::shearRatePercolation
             << "Segregation prefactor 'C_s " << Cs_ << "' must be >= 0"
             << " (0.26: Schlick et al. 2015)" << nl << exit(FatalIOError);
     }
-    const fvMesh& mesh = mixture.mesh();
-    const vector gHat(mixture.gravity()/mag(mixture.gravity()));
-    gSf_ = mesh.Sf() & dimensionedVector("gHat", dimless, gHat);
-    zeroUncoupledPatches(gSf_);
 }
 
 
