@@ -51,6 +51,36 @@ test_planar_silo_fill()
     awk '!/^#/ { m = $8 + $9 } END { print "discharged " m " kg"; exit !(m > 0.01) }' "$record"
 }
 
+# The bounded heap's limits (Fan et al. 2014; Schlick et al. 2015), half
+# fines and half coarse fed: with a segregation far stronger than the
+# diffusion (the shear-rate closures, C_s 26 for 0.26) the deposit that rose
+# with the heap is pure fines out to c W/2 from the centre line of the planar
+# bin and out to sqrt(c) W/2 from the axis of the cylinder (--segregated:
+# the fines share falls through 0.5 within one cell of the limit, >= 0.95
+# inside, <= 0.05 in the outer ring; measured 0.0445 m for 0.05 m and
+# 0.0684 m for 0.0707 m); without segregation each cell holds the feed's
+# composition to 1e-6 (--mixed). Each run's balance as the check asserts it,
+# the species' to 1e-7 (5.7e-8 and 8.3e-8 measured with the strong
+# segregation)
+test_planar_silo_fill_heap_limits()
+{
+    local dir="$workRoot/planarSiloFillHeap" geometry
+    rm -rf "$dir"; mkdir -p "$dir"
+    cp -r "$validationDir/planarSiloFill" "$dir/"
+    local case="$dir/planarSiloFill"
+    for geometry in planar axisymmetric
+    do
+        local opts="-coarse 0.5 -fill 3" t=3
+        [ "$geometry" = axisymmetric ] && { opts="-axisymmetric -b 0.04 -coarse 0.5 -fill 6"; t=6; }
+        # shellcheck disable=SC2086
+        "$case/Allrun" $opts -closures shearRate -Cs 26 -tol 1e-7 || return 1
+        "$case/check" --time "$t" --feed 0.5 --coarse 0.5 --fill "$t" --tol 1e-7 --segregated || return 1
+        # shellcheck disable=SC2086
+        "$case/Allrun" $opts || return 1
+        "$case/check" --time "$t" --feed 0.5 --coarse 0.5 --fill "$t" --mixed || return 1
+    done
+}
+
 # The fill decomposed on 2 ranks side by side (the inlet on the processor
 # boundary), shear-rate closures, 0.2 s: the balance of each run (the
 # check's assertions), the fields of the two runs within 1e-6

@@ -16,6 +16,7 @@
 #include "mixedFvPatchFields.H"
 #include "gaussLaplacianScheme.H"
 #include "snGradScheme.H"
+#include "scratchField.H"
 #include "gradScheme.H"
 #include "linear.H"
 #include "fvcDiv.H"
@@ -34,6 +35,7 @@ const Foam::word Foam::speciesAdvection::laplacianName_("laplacian(D,n)");
 const Foam::scalar Foam::speciesAdvection::emptyWeight_ = 1e-9;
 
 const Foam::scalar Foam::speciesAdvection::bulkCellAlpha_ = 0.5;
+const Foam::scalar Foam::speciesAdvection::undershootTolerance_ = 1e-10;
 
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
@@ -901,3 +903,82 @@ void Foam::speciesAdvection::setSpecies(const label k, volScalarField& n)
             tmp<surfaceScalarField>(weights_())
         );
 }
+
+
+Foam::label Foam::speciesAdvection::upwindAroundUndershoots()
+{
+    // Implicit limited weights are not bounded (a downwind share gives a
+    // row a positive off-diagonal): where the composition makes new
+    // extrema within the step, at the sharp front of a strong segregation
+    // in a wedge, a composition fell to -6e-5 and the next step's
+    // composition reset clipped it, moving 1e-3 of a fill between the
+    // species. Upwind on every face of such a cell makes its row that of
+    // an M-matrix
+    const fvMesh& mesh = mixture_.mesh();
+    tmp<volScalarField> tmarked
+    (
+        scratchField(mesh, "undershoot", dimless)
+    );
+    volScalarField& marked = tmarked.ref();
+    label nMarked = 0;
+    forAll(marked, celli)
+    {
+        for (const volScalarField& c : composition_)
+        {
+            if (c[celli] < -undershootTolerance_)
+            {
+                marked[celli] = 1;
+                ++nMarked;
+                break;
+            }
+        }
+    }
+    reduce(nMarked, sumOp<label>());
+    if (nMarked == 0)
+    {
+        return 0;
+    }
+
+    const labelUList& own = mesh.owner();
+    const labelUList& nei = mesh.neighbour();
+    const surfaceScalarField& alphaPhi = bulkFlow_.bulkFractionFlux();
+    surfaceScalarField& w = weights_.ref();
+    forAll(w, facei)
+    {
+        if (marked[own[facei]] > 0 || marked[nei[facei]] > 0)
+        {
+            w[facei] = pos0(alphaPhi[facei]);
+        }
+    }
+
+    // Coupled faces: marked on either side, so that both sides agree
+    marked.correctBoundaryConditions();
+    forAll(w.boundaryField(), patchi)
+    {
+        if (!w.boundaryField()[patchi].coupled())
+        {
+            continue;
+        }
+        const scalarField local
+        (
+            marked.boundaryField()[patchi].patchInternalField()
+        );
+        const scalarField remote
+        (
+            marked.boundaryField()[patchi].patchNeighbourField()
+        );
+        const fvsPatchScalarField& alphaPhib = alphaPhi.boundaryField()[patchi];
+        fvsPatchScalarField& wb = w.boundaryFieldRef()[patchi];
+        forAll(wb, facei)
+        {
+            if (local[facei] > 0 || remote[facei] > 0)
+            {
+                wb[facei] = pos0(alphaPhib[facei]);
+            }
+        }
+    }
+    return nMarked;
+}
+
+
+// ************************************************************************* //
