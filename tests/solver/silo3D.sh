@@ -77,3 +77,22 @@ PY
     retaining_top_worked "$dir/log.segregationDegradationFoam"
 }
 
+
+# The tutorial's fill stage on the coarse mesh (h 20 mm), 2 ranks (Allrun
+# -fill 0.4 -endTime 0.2): the inlet carved from the snapped top, the fill
+# and the discharge; per species the silo at the end = what entered - what
+# left, over both stages (tests/solver/silo/checkFill.py: 1e-8 of the fed,
+# the solids' 1e-10), something discharged, bounds and the total 0.6
+# alpha.granular (1e-8)
+test_silo3D_fill()
+{
+    local tree="$workRoot/silo3DFill"
+    rm -rf "$tree"; mkdir -p "$tree"
+    cp -r "$projectDir/tutorials/silo3D" "$projectDir/tutorials/resources" "$tree/"
+    local dir="$tree/silo3D"
+    (cd "$dir" && ./Allrun -fill 0.4 -endTime 0.2 -writeInterval 0.1 -h 0.02 -noRender > log.Allrun 2>&1) \
+        || { tail -30 "$dir/log.Allrun"; return 1; }
+    python3 "$projectDir/tests/solver/silo/checkFill.py" "$dir" || return 1
+    python3 -m sdfoam.fieldStats "$dir" bounds --tol 1e-8 --packed 0.6 || return 1
+    python3 -m sdfoam.fieldStats "$dir" inBulk --packed 0.6 --tol 1e-8
+}

@@ -880,7 +880,30 @@ Foam::bulkFlowModels::muI::muI
         alpha_*dimensionedScalar("rhoBulk", dimDensity, rhoBulk())
       + (1 - alpha_)*dimensionedScalar("rhoAir", dimDensity, rhoAir_);
     rho_.oldTime();
-    phi_ = fvc::flux(U_);
+
+    // The flux of the written time the run starts from, as interFoam's
+    // createPhi: rebuilt from U, fvc::flux(U) is not divergence-free where
+    // the bulk moves, and MULES's first step lifted alpha above 1 (by
+    // 1.4e-4 in a discharge started from a fill's last time)
+    IOobject phiHeader
+    (
+        "phi",
+        mesh.time().timeName(),
+        mesh,
+        IOobject::MUST_READ,
+        IOobject::NO_WRITE,
+        false
+    );
+    if (phiHeader.typeHeaderOk<surfaceScalarField>(true))
+    {
+        phi_ = surfaceScalarField(phiHeader, mesh);
+        Info<< "    muI: the flux phi read from time " << mesh.time().timeName()
+            << endl;
+    }
+    else
+    {
+        phi_ = fvc::flux(U_);
+    }
     rhoPhi_ = fvc::interpolate(rho_)*phi_;
 
     // The orifice against the particles: a bulk arches over an orifice

@@ -913,7 +913,8 @@ Foam::label Foam::speciesAdvection::upwindAroundUndershoots()
     // in a wedge, a composition fell to -6e-5 and the next step's
     // composition reset clipped it, moving 1e-3 of a fill between the
     // species. Upwind on every face of such a cell makes its row that of
-    // an M-matrix
+    // an M-matrix (in the advection: the explicit segregation flux and
+    // non-orthogonal correction stay)
     const fvMesh& mesh = mixture_.mesh();
     tmp<volScalarField> tmarked
     (
@@ -939,6 +940,22 @@ Foam::label Foam::speciesAdvection::upwindAroundUndershoots()
         return 0;
     }
 
+    // Only faces whose weight changes count: where a cell's faces are all
+    // upwind already (at the bulk's edge, an upwind scheme, an earlier
+    // solve) the undershoot has another source (the explicit segregation
+    // flux, the non-orthogonal correction) and a solve again would repeat
+    // the same solve
+    label nChanged = 0;
+    auto setUpwind = [&nChanged](scalar& weight, const scalar flux)
+    {
+        const scalar upwind = pos0(flux);
+        if (weight != upwind)
+        {
+            weight = upwind;
+            ++nChanged;
+        }
+    };
+
     const labelUList& own = mesh.owner();
     const labelUList& nei = mesh.neighbour();
     const surfaceScalarField& alphaPhi = bulkFlow_.bulkFractionFlux();
@@ -947,7 +964,7 @@ Foam::label Foam::speciesAdvection::upwindAroundUndershoots()
     {
         if (marked[own[facei]] > 0 || marked[nei[facei]] > 0)
         {
-            w[facei] = pos0(alphaPhi[facei]);
+            setUpwind(w[facei], alphaPhi[facei]);
         }
     }
 
@@ -973,11 +990,23 @@ Foam::label Foam::speciesAdvection::upwindAroundUndershoots()
         {
             if (local[facei] > 0 || remote[facei] > 0)
             {
-                wb[facei] = pos0(alphaPhib[facei]);
+                setUpwind(wb[facei], alphaPhib[facei]);
             }
         }
     }
-    return nMarked;
+    reduce(nChanged, sumOp<label>());
+
+    Info<< "Species: compositions below 0 in " << nMarked << " cells";
+    if (nChanged > 0)
+    {
+        Info<< ": upwind on " << nChanged << " more faces, solved again";
+    }
+    else
+    {
+        Info<< ", their faces upwind already: kept";
+    }
+    Info<< endl;
+    return nChanged;
 }
 
 
