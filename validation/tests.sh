@@ -59,6 +59,10 @@ test_planar_silo_fill()
     [ -s "$record" ] || { echo "no discharge record $record"; return 1; }
     # Material left through the slot in the discharge
     awk '!/^#/ { m = $8 + $9 } END { print "discharged " m " kg"; exit !(m > 0.01) }' "$record" || return 1
+    # Nothing through the closed inlet in the discharge (the flux read at
+    # the restart carries the inlet's new noSlip, not the fill's feed)
+    awk '!/^#/ { m = $8 + $9 } END { print "through the closed inlet " m " kg"; exit !(m == 0) }' \
+        "$case/postProcessing/outletComposition/2/inlet.dat" || return 1
     # Every written time of both stages: 0 <= n_i, their sum at most 0.6
     # (a discharge restarted with the flux rebuilt from U lifted alpha, and
     # so the species' sum, 1.4e-4 above packing)

@@ -402,9 +402,11 @@ PY
 # silo fed through the inlet carved from its top for 0.5 s, then the inlet
 # closed and the outlet opened): per species, the silo at the end = what
 # entered - what left through the outlet and the top, over both stages
-# (tests/solver/silo/checkFill.py: 1e-8 of the fed; the solids' 1e-10),
-# something discharged, every species within [0, its total] and the total
-# 0.6 alpha.granular (1e-8)
+# (tests/solver/silo/checkFill.py: 1e-8 of the fed; the solids' 1e-9:
+# 7.3e-11 measured, the species solved to silo2D's 1e-10 where silo3D's
+# 1e-12 gives 1.3e-12), nothing through the closed inlet, something
+# discharged, every species within [0, its total] and the total 0.6
+# alpha.granular (1e-8)
 test_silo2D_fill()
 {
     local tree="$workRoot/silo2DFill"
@@ -414,7 +416,7 @@ test_silo2D_fill()
     local dir="$tree/silo2D"
     (cd "$dir" && ./Allrun -fill 0.5 -endTime 0.3 -writeInterval 0.1 > log.Allrun 2>&1) \
         || { tail -30 "$dir/log.Allrun"; return 1; }
-    python3 "$projectDir/tests/solver/silo/checkFill.py" "$dir" || return 1
+    python3 "$projectDir/tests/solver/silo/checkFill.py" "$dir" --tol-total 1e-9 || return 1
     python3 -m sdfoam.fieldStats "$dir" bounds --tol 1e-8 --packed 0.6 || return 1
     python3 -m sdfoam.fieldStats "$dir" inBulk --packed 0.6 --tol 1e-8
 }

@@ -897,8 +897,22 @@ Foam::bulkFlowModels::muI::muI
     if (phiHeader.typeHeaderOk<surfaceScalarField>(true))
     {
         phi_ = surfaceScalarField(phiHeader, mesh);
+        // The patches whose velocity is fixed carry it, not the written
+        // flux: a run that switched a patch's conditions between two runs
+        // (a fill's inlet closed by noSlip) would otherwise let the old
+        // flux through for the first step (MULES's alpha and the species
+        // take their boundary fluxes from phi before the pressure solve)
+        forAll(phi_.boundaryField(), patchi)
+        {
+            const fvPatchVectorField& Up = U_.boundaryField()[patchi];
+            if (!Up.coupled() && Up.fixesValue())
+            {
+                phi_.boundaryFieldRef()[patchi] =
+                    Up & mesh.Sf().boundaryField()[patchi];
+            }
+        }
         Info<< "    muI: the flux phi read from time " << mesh.time().timeName()
-            << endl;
+            << " (fixed-velocity patches from U)" << endl;
     }
     else
     {

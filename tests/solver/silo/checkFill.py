@@ -13,8 +13,10 @@ outletComposition (postProcessing/outletComposition/<stage start>/
 
 Exit status 1 if a species' balance is off by more than --tol (relative to
 what entered), the solids' by more than --tol-total, nothing entered or
-nothing was discharged, or more than --tol-top of what entered left
-through the top.
+nothing was discharged, more than --tol-top of what entered left through
+the top, or anything entered through the closed inlet in the discharge
+(more than 1e-12 of the fed). The species' densities are read from
+constant/granularProperties.
 
 Usage: checkFill.py CASE [--tol 1e-8] [--tol-total 1e-10] [--tol-top 1e-5]
 """
@@ -24,7 +26,14 @@ import os
 import re
 import sys
 
-rhoS = 2500.0
+
+
+def densities(case):
+    """{species: rho} from the species' dictionaries of granularProperties."""
+    with open(os.path.join(case, "constant", "granularProperties")) as f:
+        text = re.sub(r"//[^\n]*|/\*.*?\*/", " ", f.read(), flags=re.S)
+    return {m.group(1): float(m.group(2)) for m in re.finditer(
+        r"\b(\w+)\s*\{[^{}]*\brho\s+([^;\s]+)\s*;[^{}]*\}", text)}
 
 
 def logVolumes(path):
@@ -63,9 +72,9 @@ def records(case, patch):
     return out
 
 
-def cumulative(record, species, row):
+def cumulative(record, species, row, rho):
     header, rows = record
-    return rows[row][header.index("cumulativeMass.%s[kg]" % species)] / rhoS
+    return rows[row][header.index("cumulativeMass.%s[kg]" % species)] / rho[species]
 
 
 def main():
@@ -80,17 +89,27 @@ def main():
     fill = logVolumes(os.path.join(a.case, "log.segregationDegradationFoam.fill"))
     discharge = logVolumes(os.path.join(a.case, "log.segregationDegradationFoam.discharge"))
     species = sorted(fill[0])
+    rho = densities(a.case)
+    missing = [sp for sp in species if sp not in rho]
+    if missing:
+        sys.exit("checkFill: no rho of %s in constant/granularProperties" % missing)
     patches = {name: records(a.case, name) for name in ("inlet", "outlet", "top")}
 
+    def cum(stage, sp, row):
+        return cumulative(stage, sp, row, rho)
+
     ok = True
-    fedTotal = sum(-sum(cumulative(stage, sp, -1) for stage in patches["inlet"])
+    fedTotal = sum(-sum(cum(stage, sp, -1) for stage in patches["inlet"])
                    for sp in species)
+    if not fedTotal > 0:
+        print("FAIL: nothing fed (%g m3)" % fedTotal)
+        return 1
     errTotal = 0.0
     for sp in species:
         # The start: the first logged volume plus what left in the first step
-        start = fill[0][sp] + sum(cumulative(patches[name][0], sp, 0)
+        start = fill[0][sp] + sum(cum(patches[name][0], sp, 0)
                                   for name in patches)
-        through = {name: sum(cumulative(stage, sp, -1) for stage in patches[name])
+        through = {name: sum(cum(stage, sp, -1) for stage in patches[name])
                    for name in patches}
         expected = start - sum(through.values())
         end = discharge[-1][sp]
@@ -100,19 +119,28 @@ def main():
               " (expected %.10e): balance %.3e of the fed"
               % (sp, start, -through["inlet"], through["outlet"],
                  through["top"], end, expected, err))
-        ok = ok and abs(err) <= a.tol
-    discharged = sum(cumulative(patches["outlet"][1], sp, -1) for sp in species)
-    top = sum(cumulative(stage, sp, -1) for stage in patches["top"] for sp in species)
-    print("fed %.6e m3, discharged %.6e m3, through the top %.3e of the fed;"
-          " solids' balance %.3e" % (fedTotal, discharged, top / fedTotal, errTotal))
-    if not (fedTotal > 0 and discharged > 0):
-        print("FAIL: nothing fed or nothing discharged")
+        if not abs(err) <= a.tol:
+            print("FAIL: the balance of %s beyond %.1e" % (sp, a.tol))
+            ok = False
+    discharged = sum(cum(patches["outlet"][1], sp, -1) for sp in species)
+    top = sum(cum(stage, sp, -1) for stage in patches["top"] for sp in species)
+    closedInlet = sum(abs(cum(patches["inlet"][1], sp, -1)) for sp in species)
+    print("fed %.6e m3, discharged %.6e m3, through the top %.3e of the fed,"
+          " through the closed inlet %.3e of it; solids' balance %.3e"
+          % (fedTotal, discharged, top / fedTotal, closedInlet / fedTotal,
+             errTotal))
+    if not discharged > 0:
+        print("FAIL: nothing discharged")
         ok = False
-    if not (abs(errTotal) <= a.tol_total and top <= a.tol_top * fedTotal):
-        print("FAIL: the solids' balance or the top's outflow")
+    if not abs(errTotal) <= a.tol_total:
+        print("FAIL: the solids' balance beyond %.1e" % a.tol_total)
         ok = False
-    if not ok:
-        print("FAIL: a species' balance beyond %.1e" % a.tol)
+    if not top <= a.tol_top * fedTotal:
+        print("FAIL: more than %.1e of the fed through the top" % a.tol_top)
+        ok = False
+    if not closedInlet <= 1e-12 * fedTotal:
+        print("FAIL: material through the closed inlet in the discharge")
+        ok = False
     print("PASS" if ok else "FAILED")
     return 0 if ok else 1
 
