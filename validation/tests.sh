@@ -78,7 +78,7 @@ test_planar_silo_fill()
 # inside, <= 0.05 in the outer ring; measured 0.0445 m for 0.05 m and
 # 0.0684 m for 0.0707 m, 10 mm cells); without segregation each cell holds the feed's
 # composition to 1e-9 (--mixed; 0 measured). Each run's balance as the
-# check asserts it, the species' to 1e-7 (1.6e-8 and 4.1e-8 measured with
+# check asserts it, the species' to 1e-7 (8.5e-9 and 1.9e-8 measured with
 # the strong segregation)
 test_planar_silo_fill_heap_limits()
 {
@@ -207,7 +207,7 @@ PY
 
 # The fill's extremes: a single-species feed (no coarse appears anywhere); a
 # feed of pure coarse onto a bed of fines (each species' balance to 5e-8:
-# 1.2e-8 measured; the solids' to 1e-10, as every run's check); no feed
+# 1.25e-9 measured; the solids' to 1e-10, as every run's check); no feed
 # (nothing enters, nothing moves: exactly 0 solids); a fill that overflows
 # the bin (a FatalError naming the open top and the inlet, no field with a
 # NaN written)

@@ -82,7 +82,7 @@ PY
 # -fill 0.4 -endTime 0.2): the inlet carved from the snapped top, the fill
 # and the discharge; per species the silo at the end = what entered - what
 # left, over both stages (tests/solver/silo/checkFill.py: 1e-8 of the fed,
-# the solids' 1e-10; 1.3e-9 and 1.3e-12 measured), nothing through the
+# the solids' 1e-10; 2.1e-12 and 1.3e-12 measured), nothing through the
 # closed inlet, something discharged, bounds and the total 0.6
 # alpha.granular (1e-8)
 test_silo3D_fill()

@@ -32,7 +32,11 @@ const Foam::word Foam::speciesAdvection::schemeName_("div(phi,n)");
 
 const Foam::word Foam::speciesAdvection::laplacianName_("laplacian(D,n)");
 
-const Foam::scalar Foam::speciesAdvection::emptyWeight_ = 1e-9;
+// Small against any bulk fraction that holds material worth counting: the
+// term moves volume between the species (emptyWeight_ V dc a cell), and at
+// 1e-9 it moved up to 1.2e-8 of a fill (surface cells at alpha ~ 1e-9,
+// where it weighed as much as the bulk); at 1e-14, 1.2e-9
+const Foam::scalar Foam::speciesAdvection::emptyWeight_ = 1e-14;
 
 const Foam::scalar Foam::speciesAdvection::bulkCellAlpha_ = 0.5;
 const Foam::scalar Foam::speciesAdvection::undershootTolerance_ = 1e-10;
