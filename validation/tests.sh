@@ -247,6 +247,85 @@ sys.exit(0 if sum(a) == 0 else 1)" || return 1
     fi
 }
 
+# The planar hopper (planarSiloFill -hopper 20, walls at 19.9 deg with
+# Coulomb friction 16.7 deg, 5 mm cells, 100 mm wide, 24 mm slot): half
+# fines fed for 1 s with the shear-rate closures (the fill's balance as the
+# check asserts it), then 0.3 s of discharge: each species in the hopper at
+# the end plus what left (slot, inlet, top) equals the fill's to 1e-8 of it;
+# bounds at every written time; mass flow: in every row of the lower three
+# quarters of the hopper the wall cell moves at >= 0.3 of the centre cell's
+# speed at the last two writes (0.60-0.87 measured), where the flat bin of
+# the same width (20 mm slot) leaves its floor's corner stagnant (< 0.05 in
+# the two lowest rows; 0.004 measured). Refused: a half-angle outside (0,
+# 90) and -hopper with -axisymmetric
+test_planar_silo_fill_hopper()
+{
+    local case
+    case=$(fresh_validation_case planarSiloFillHopper planarSiloFill) || return 1
+    local geometry="-W 0.1 -H 0.2 -dx 5e-3 -coarse 0.5 -fill 1 -feed 0.5 -closures shearRate -wallFriction 16.7"
+    local refused
+    for refused in "-hopper 95" "-hopper 20 -axisymmetric"
+    do
+        # shellcheck disable=SC2086
+        if "$case/Allrun" $refused > "$case/refused.out" 2>&1
+        then
+            echo "Allrun $refused ran"; return 1
+        fi
+        grep -- "-hopper" "$case/refused.out" || { cat "$case/refused.out"; return 1; }
+    done
+    local pattern
+    for pattern in flat hopper
+    do
+        local opts="-b 0.02"
+        [ "$pattern" = hopper ] && opts="-b 0.024 -hopper 20"
+        # shellcheck disable=SC2086
+        "$case/Allrun" $geometry $opts -discharge 0.3 || return 1
+        python3 -m sdfoam.fieldStats "$case" bounds --tol 1e-8 --packed 0.6 || return 1
+        python3 - "$case" "$pattern" <<'PY' || return 1
+import math, os, re, sys
+from sdfoam import foamcase
+case, pattern = sys.argv[1], sys.argv[2]
+params = open(os.path.join(case, "system", "caseParameters")).read()
+zc = float(re.search(r"\bzc\s+([^;]+);", params).group(1)) if pattern == "hopper" else 0.0
+V = foamcase.readScalarField(case, "0", "V")
+ok = True
+# The discharge's balance per species (kg per m of depth x depth)
+out = [0.0, 0.0]
+for patch in ("outlet", "inlet", "atmosphere"):
+    rows = foamcase.readColumns(os.path.join(case, "postProcessing", "outletComposition", "1", patch + ".dat"))
+    out[0] += rows[-1][7] / 2500
+    out[1] += rows[-1][8] / 2500
+for k, sp in enumerate(("fine", "coarse")):
+    start = sum(n * v for n, v in zip(foamcase.readScalarField(case, "1", "n." + sp), V))
+    end = sum(n * v for n, v in zip(foamcase.readScalarField(case, "1.3", "n." + sp), V))
+    err = (end + out[k] - start) / start
+    print("%s: %s at the fill's end %.10e m3, discharged %.10e, left %.10e: balance %.3e"
+          % (pattern, sp, start, out[k], end, err))
+    ok = ok and abs(err) <= 1e-8 and out[k] > 0.2 * start
+# Wall against centre speeds, rows of the lower three quarters of the
+# hopper (the flat bin: its two lowest rows)
+C = foamcase.cellCentres(case)
+rows = {}
+for i, c in enumerate(C):
+    rows.setdefault(round(c[2], 7), []).append(i)
+zs = sorted(rows)
+zs = [z for z in zs if z < 0.75 * zc] if pattern == "hopper" else zs[:2]
+worst, best = float("inf"), 0.0
+for t in ("1.225", "1.3"):
+    U = foamcase.readVectorField(case, t, "U")
+    for z in zs:
+        ids = sorted(rows[z], key=lambda i: C[i][0])
+        centre = min(ids, key=lambda i: abs(C[i][0] - 0.05))
+        for wall in (ids[0], ids[-1]):
+            r = math.sqrt(sum(u * u for u in U[wall])) / math.sqrt(sum(u * u for u in U[centre]))
+            worst, best = min(worst, r), max(best, r)
+print("%s: wall/centre speed over %d rows: min %.3g max %.3g" % (pattern, len(zs), worst, best))
+ok = ok and (worst >= 0.3 if pattern == "hopper" else best < 0.05)
+sys.exit(0 if ok else 1)
+PY
+    done
+}
+
 test_convergence_study()
 {
     validation/convergenceStudy --no-docs --work "$workRoot/validation"
