@@ -6,7 +6,7 @@
 // Keys (SI units; '#' starts a comment):
 //   species          name:diameter:density [name:diameter:density ...]
 //   volumeFractions  solids volume fraction of each species (default: equal)
-//   particles, solidsFraction, mode (nve | thermostatted | leesEdwards)
+//   particles, solidsFraction, mode (nve | thermostatted | leesEdwards | stochastic)
 //   temperature      T = <|c|^2> (sum of three components) [m2/s2]: the thermostat's
 //                    target, or the initial T of an nve cell
 //   shearRate        gammaDot [1/s] (leesEdwards)

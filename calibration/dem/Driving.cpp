@@ -1,4 +1,5 @@
 #include "Driving.hpp"
+#include "StochasticDriving.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -12,9 +13,10 @@ CellMode cellModeFromName(const std::string& name)
     if (name == "nve") return CellMode::nve;
     if (name == "thermostatted" || name == "driven") return CellMode::thermostatted;
     if (name == "leesEdwards" || name == "shear") return CellMode::leesEdwards;
+    if (name == "stochastic") return CellMode::stochastic;
     throw std::invalid_argument
     (
-        "cell mode '" + name + "' unknown; valid: nve, thermostatted, leesEdwards"
+        "cell mode '" + name + "' unknown; valid: nve, thermostatted, leesEdwards, stochastic"
     );
 }
 
@@ -25,6 +27,7 @@ std::string cellModeName(CellMode mode)
         case CellMode::nve: return "nve";
         case CellMode::thermostatted: return "thermostatted";
         case CellMode::leesEdwards: return "leesEdwards";
+        case CellMode::stochastic: return "stochastic";
     }
     return "unknown";
 }
@@ -35,7 +38,8 @@ std::unique_ptr<Driving> Driving::New
     double targetTemperature,
     double thermostatTime,
     double shearRate,
-    double timeStep
+    double timeStep,
+    std::uint64_t seed
 )
 {
     switch (mode)
@@ -57,18 +61,38 @@ std::unique_ptr<Driving> Driving::New
                 throw std::invalid_argument("leesEdwards cell: shearRate must be finite");
             }
             return std::make_unique<LeesEdwardsShear>(shearRate);
+        case CellMode::stochastic:
+            return std::make_unique<StochasticDriving>
+            (
+                targetTemperature, thermostatTime, timeStep, seed
+            );
     }
-    throw std::invalid_argument("cell mode unknown; valid: nve, thermostatted, leesEdwards");
+    throw std::invalid_argument
+    (
+        "cell mode unknown; valid: nve, thermostatted, leesEdwards, stochastic"
+    );
 }
 
-// ---------------------------------------------------------------- thermostat
+void Driving::importState(const std::vector<double>& state)
+{
+    if (!state.empty())
+    {
+        throw std::invalid_argument
+        (
+            "driving '" + name() + "' keeps no state, but the checkpoint holds "
+          + std::to_string(state.size()) + " values of one"
+        );
+    }
+}
+
+// ---------------------------------------------------------------- chunk sums
 
 namespace
 {
 
-//- Adds the thermostat's sums over particles [begin, end) to sum: mass, mass x velocity,
-//  velocity, |velocity|^2.
-void addThermostatSums(const Particles& p, int begin, int end, double* sum)
+//- Adds the sums over particles [begin, end) to sum: mass, mass x velocity, velocity,
+//  |velocity|^2.
+void addVelocitySums(const Particles& p, int begin, int end, double* sum)
 {
     for (int i = begin; i < end; ++i)
     {
@@ -79,6 +103,67 @@ void addThermostatSums(const Particles& p, int begin, int end, double* sum)
 }
 
 } // namespace
+
+bool VelocityChunkSums::begin(int nParticles, bool endsStep)
+{
+    if (endsStep)
+    {
+        chunks_.resize(std::size_t((nParticles + Driving::finishChunk - 1)/Driving::finishChunk));
+    }
+    ready_ = endsStep;
+    return endsStep;
+}
+
+void VelocityChunkSums::addRange(const Particles& p, int begin, int end)
+{
+    // per fixed chunk (the ranges are whole chunks), while the velocities are in cache
+    for (int c0 = begin; c0 < end; c0 += Driving::finishChunk)
+    {
+        Totals& sum = chunks_[std::size_t(c0/Driving::finishChunk)];
+        sum.fill(0.0);
+        addVelocitySums(p, c0, std::min(end, c0 + Driving::finishChunk), sum.data());
+    }
+}
+
+VelocityChunkSums::Totals VelocityChunkSums::totals(const Particles& p)
+{
+    if (!ready_) return sum(p);
+    ready_ = false;
+    Totals total{};
+    for (const Totals& chunk : chunks_)
+    {
+        for (int k = 0; k < size; ++k) total[k] += chunk[k];
+    }
+    return total;
+}
+
+VelocityChunkSums::Totals VelocityChunkSums::sum(const Particles& p)
+{
+    // the same chunks, in the same order, as the force pass's finish
+    const int n = int(p.size());
+    Totals total{};
+    for (int c0 = 0; c0 < n; c0 += Driving::finishChunk)
+    {
+        Totals chunk{};
+        addVelocitySums(p, c0, std::min(n, c0 + Driving::finishChunk), chunk.data());
+        for (int k = 0; k < size; ++k) total[k] += chunk[k];
+    }
+    return total;
+}
+
+double temperatureAboutMean(const VelocityChunkSums::Totals& total, int n, double u[3])
+{
+    u[0] = u[1] = u[2] = 0;
+    if (!(total[0] > 0) || n < 1) return 0;
+    // mass-weighted mean velocity u; sum |v - u|^2 = sum |v|^2 - 2 u . sum v + n |u|^2
+    u[0] = total[1]/total[0]; u[1] = total[2]/total[0]; u[2] = total[3]/total[0];
+    const double sumC2 =
+        total[7] - 2*(u[0]*total[4] + u[1]*total[5] + u[2]*total[6])
+      + n*(u[0]*u[0] + u[1]*u[1] + u[2]*u[2]);
+    return sumC2/n;
+}
+
+// ---------------------------------------------------------------- thermostat
 
 VelocityRescalingThermostat::VelocityRescalingThermostat
 (
@@ -94,54 +179,21 @@ VelocityRescalingThermostat::VelocityRescalingThermostat
 
 bool VelocityRescalingThermostat::beginForcePass(int nParticles, bool endsStep)
 {
-    if (endsStep)
-    {
-        chunkSums_.resize(std::size_t((nParticles + finishChunk - 1)/finishChunk));
-    }
-    sumsReady_ = endsStep;
-    return endsStep;
+    return sums_.begin(nParticles, endsStep);
 }
 
 void VelocityRescalingThermostat::finishRange(const Particles& p, int begin, int end)
 {
-    // per fixed chunk (the ranges are whole chunks), while the velocities are in cache
-    for (int c0 = begin; c0 < end; c0 += finishChunk)
-    {
-        double sum[ChunkSums::size] = {};
-        addThermostatSums(p, c0, std::min(end, c0 + finishChunk), sum);
-        std::copy(sum, sum + ChunkSums::size, chunkSums_[c0/finishChunk].value);
-    }
+    sums_.addRange(p, begin, end);
 }
 
 void VelocityRescalingThermostat::afterStep(Particles& p, int nThreads)
 {
-    // sums per fixed chunk of particles (filled by the force pass's finish, or here), added
-    // in chunk order: the same T whatever the threads
     const int n = int(p.size());
-    const int nChunks = (n + finishChunk - 1)/finishChunk;
-    if (!sumsReady_)
-    {
-        chunkSums_.resize(std::size_t(nChunks));
-        for (int c = 0; c < nChunks; ++c)
-        {
-            double* sum = chunkSums_[c].value;
-            std::fill(sum, sum + ChunkSums::size, 0.0);
-            addThermostatSums(p, c*finishChunk, std::min(n, (c + 1)*finishChunk), sum);
-        }
-    }
-    sumsReady_ = false;
-    double total[ChunkSums::size] = {};
-    for (int c = 0; c < nChunks; ++c)
-    {
-        for (int k = 0; k < ChunkSums::size; ++k) total[k] += chunkSums_[c].value[k];
-    }
-    if (!(total[0] > 0)) return;
-    // mass-weighted mean velocity u; sum |v - u|^2 = sum |v|^2 - 2 u . sum v + n |u|^2
-    const double ux = total[1]/total[0], uy = total[2]/total[0], uz = total[3]/total[0];
-    const double sumC2 =
-        total[7] - 2*(ux*total[4] + uy*total[5] + uz*total[6]) + n*(ux*ux + uy*uy + uz*uz);
-    const double T = sumC2/n;
+    double u[3];
+    const double T = temperatureAboutMean(sums_.totals(p), n, u);
     if (!(T > 0)) return;
+    const double ux = u[0], uy = u[1], uz = u[2];
     const double ratio = targetTemperature_/T;
     const double lambda =
         std::sqrt(std::max(0.0, 1.0 + timeStep_/relaxationTime_*(ratio - 1.0)));

@@ -13,10 +13,12 @@
 //    Simulation::setDriving before the first step (nothing here changes);
 //  - selectable by name: also an enumerator in CellMode (with its names in
 //    cellModeFromName/cellModeName), its settings in SimulationSettings and one case in
-//    Driving::New.
+//    Driving::New (StochasticDriving.hpp is one, in its own files).
 
 #include "Particles.hpp"
 
+#include <array>
+#include <cstdint>
 #include <memory>
 #include <string>
 #include <vector>
@@ -28,8 +30,9 @@ namespace sdf::dem
 enum class CellMode
 {
     nve,            // plain Newtonian dynamics (energy conserved if elastic and frictionless)
-    thermostatted,  // homogeneous cell held at a target granular temperature
-    leesEdwards     // simple shear at a prescribed rate, T is an output
+    thermostatted,  // homogeneous cell held at a target granular temperature (rescaling)
+    leesEdwards,    // simple shear at a prescribed rate, T is an output
+    stochastic      // homogeneous cell held at a target T by random kicks per particle
 };
 
 CellMode cellModeFromName(const std::string& name);
@@ -43,14 +46,16 @@ public:
     static constexpr int finishChunk = 64;
 
     //- The driving of mode; throws std::invalid_argument naming the entry (a thermostat
-    //  needs targetTemperature > 0, a sheared cell a finite shearRate).
+    //  needs targetTemperature > 0, a sheared cell a finite shearRate). seed: the
+    //  stochastic driving's random numbers.
     static std::unique_ptr<Driving> New
     (
         CellMode mode,
         double targetTemperature,
         double thermostatTime,
         double shearRate,
-        double timeStep
+        double timeStep,
+        std::uint64_t seed = 1
     );
 
     virtual ~Driving() = default;
@@ -77,7 +82,39 @@ public:
 
     // --- after the step
     virtual void afterStep(Particles& /*particles*/, int /*nThreads*/) {}
+
+    // --- state for a bitwise resume (SimulationState::driving)
+    virtual std::vector<double> exportState() const { return {}; }
+    //- Throws std::invalid_argument for a state this driving did not export.
+    virtual void importState(const std::vector<double>& state);
 };
+
+//- Sums over the particles per fixed chunk of Driving::finishChunk, added in chunk order
+//  (the same totals whatever the threads): mass, mass x velocity, velocity, |velocity|^2.
+//  Filled by the force pass's finish while the velocities are in cache, or afterwards.
+class VelocityChunkSums
+{
+public:
+    static constexpr int size = 8;
+    using Totals = std::array<double, size>;
+
+    //- As Driving::beginForcePass: true when the pass ends the step (fill then).
+    bool begin(int nParticles, bool endsStep);
+    //- Particles [begin, end), whole chunks but maybe the last.
+    void addRange(const Particles& particles, int begin, int end);
+    //- The totals of the step's final velocities (summed now if the pass did not).
+    Totals totals(const Particles& particles);
+    //- The totals of particles' velocities as they are now.
+    static Totals sum(const Particles& particles);
+
+private:
+    std::vector<Totals> chunks_;
+    bool ready_ = false;
+};
+
+//- T = <|v - u|^2> (sum of 3 components) of n particles about their mass-weighted mean
+//  velocity u (written to u), from VelocityChunkSums' totals; 0 without mass.
+double temperatureAboutMean(const VelocityChunkSums::Totals& total, int n, double u[3]);
 
 //- No driving: Newtonian dynamics of the cell.
 class NoDriving : public Driving
@@ -101,14 +138,10 @@ public:
     void afterStep(Particles& particles, int nThreads) override;
 
 private:
-    //- Per chunk: mass, mass x velocity, velocity, |velocity|^2.
-    struct ChunkSums { static constexpr int size = 8; double value[size]; };
-
     double targetTemperature_;
     double relaxationTime_;
     double timeStep_;
-    std::vector<ChunkSums> chunkSums_;
-    bool sumsReady_ = false;   // filled by the last force pass's finish
+    VelocityChunkSums sums_;
 };
 
 //- Simple shear by Lees-Edwards images: the box carries the streaming profile, the cell's

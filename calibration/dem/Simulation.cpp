@@ -138,11 +138,16 @@ Simulation::Simulation
         throw std::invalid_argument(msg.str());
     }
 
-    if (settings_.thermostatTime <= 0) settings_.thermostatTime = 50*dt_;
+    if (settings_.thermostatTime <= 0)
+    {
+        // the stochastic kicks' amplitude is steered slowly (a white noise of nearly
+        // constant strength), the rescaling thermostat's factor quickly
+        settings_.thermostatTime = (settings_.mode == CellMode::stochastic ? 1000 : 50)*dt_;
+    }
     driving_ = Driving::New
     (
         settings_.mode, settings_.targetTemperature, settings_.thermostatTime,
-        settings_.shearRate, dt_
+        settings_.shearRate, dt_, settings_.seed
     );
     box_.shearRate = driving_->shearRate();
 
@@ -257,6 +262,7 @@ SimulationState Simulation::exportState() const
         st.pairForce[3*k] = pfx_[k]; st.pairForce[3*k + 1] = pfy_[k]; st.pairForce[3*k + 2] = pfz_[k];
         st.pairNCrossFt[3*k] = pcx_[k]; st.pairNCrossFt[3*k + 1] = pcy_[k]; st.pairNCrossFt[3*k + 2] = pcz_[k];
     }
+    st.driving = driving_->exportState();
     return st;
 }
 
@@ -284,6 +290,7 @@ void Simulation::importState(const SimulationState& st)
             throw std::invalid_argument("checkpoint: species id out of range");
         }
     }
+    driving_->importState(st.driving);
     particles_ = st.particles;
     if (particles_.id.size() != n)
     {

@@ -10,7 +10,7 @@
 // rebuilds, the spatial renumbering and the thread ranges in SimulationNeighbours.cpp;
 // temperatures, energies and stresses in SimulationMeasurements.cpp. The parts it is
 // built from: contact laws (ContactLaw, ContactModels, ContactForce), driving
-// (Driving: thermostat, Lees-Edwards), walls (Walls), renumbering (Renumbering), thread
+// (Driving: thermostat, Lees-Edwards; StochasticDriving), walls (Walls), renumbering (Renumbering), thread
 // balancing (BlockBalance), statistics (CellStatistics).
 //
 // Reproducibility: every particle sums the forces of its pairs in decreasing pair order
@@ -48,7 +48,9 @@ struct SimulationSettings
     double skin = -1;                      // Verlet skin [m]; < 0: 0.3 x smallest diameter
     CellMode mode = CellMode::nve;          // built-in driving (Simulation::setDriving: another)
     double targetTemperature = 0;          // T = <|c|^2> (sum of 3 components) [m^2/s^2]
-    double thermostatTime = 0;             // relaxation time tau_T [s]; 0: 50 dt
+    double thermostatTime = 0;             // relaxation time tau_T [s]; 0: 50 dt (stochastic:
+                                           // the kicks' steering time; 0: 1000 dt)
+    std::uint64_t seed = 1;                // the stochastic driving's random numbers
     double shearRate = 0;                  // gammaDot [1/s] for Lees-Edwards
     double maxOverlapFraction = 0.1;       // stop when delta/d_min exceeds this (<= 0: off)
     double energyBlowUpFactor = 1e3;       // stop when E_kin > factor x reference
@@ -72,6 +74,7 @@ struct SimulationState
     std::vector<ContactHistory> history;
     // per-pair force on i and n x F_t of the last evaluation (stress measurements)
     std::vector<double> pairForce, pairNCrossFt;   // 3 per pair
+    std::vector<double> driving;                   // the driving's own state (Driving::exportState)
 };
 
 class Simulation

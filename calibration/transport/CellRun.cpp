@@ -398,6 +398,7 @@ CellRunResult runCell(const CellRunSettings& settings)
     // the particles are renumbered in y every 1000 steps (the threads' ranges stay slabs);
     // the per-particle measurements follow ids
     SimulationSettings simSettings = settings.simulation;
+    simSettings.seed = settings.seed;   // the stochastic driving's kicks
     if (simSettings.renumberEvery == 0) simSettings.renumberEvery = 1000;
     Simulation sim(species, simSettings, packing.particles, packing.box);
     result.timeStep = sim.timeStep();

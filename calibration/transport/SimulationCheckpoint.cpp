@@ -72,6 +72,7 @@ void addSimulationState(io::Checkpoint& out, const Simulation& simulation)
     c.integerVectors["pairs/touching"] = touching;
     c.vectors["pairs/force"] = st.pairForce;
     c.vectors["pairs/nCrossFt"] = st.pairNCrossFt;
+    c.vectors["driving/state"] = st.driving;
     // flat names: io::Checkpoint keys are dataset names, no groups
     for (auto& [k, v] : c.scalars) out.scalars[k] = v;
     for (auto& [k, v] : c.integers) out.integers[k] = v;
@@ -137,6 +138,8 @@ void loadSimulationState(const io::Checkpoint& c, Simulation& simulation, const 
     }
     st.pairForce = vec("pairs_force");
     st.pairNCrossFt = vec("pairs_nCrossFt");
+    // the driving's own state (absent in checkpoints of drivings that keep none)
+    if (c.vectors.count("driving_state")) st.driving = vec("driving_state");
     st.time = c.scalars.at("time");
     st.shearOffset = c.scalars.at("shearOffset");
     st.stepCount = long(c.integers.at("stepCount"));

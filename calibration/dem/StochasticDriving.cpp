@@ -1,0 +1,163 @@
+#include "StochasticDriving.hpp"
+
+#include <Random123/boxmuller.hpp>
+#include <Random123/philox.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+namespace sdf::dem
+{
+
+namespace
+{
+
+//- The key's second word: the stream of the driving's kicks (another use of the same seed
+//  would take another constant).
+constexpr std::uint64_t kickStream = 0x5344462d6b69636bULL;   // "SDF-kick"
+
+} // namespace
+
+StochasticDriving::StochasticDriving
+(
+    double targetTemperature,
+    double steeringTime,
+    double timeStep,
+    std::uint64_t seed
+)
+:
+    targetTemperature_(targetTemperature),
+    steeringTime_(steeringTime),
+    timeStep_(timeStep),
+    seed_(seed)
+{
+    if (!(targetTemperature > 0) || !std::isfinite(targetTemperature))
+    {
+        throw std::invalid_argument
+        (
+            "stochastic cell: targetTemperature (temperature) must be positive, got "
+          + std::to_string(targetTemperature)
+        );
+    }
+    if (!(timeStep > 0) || !(steeringTime > timeStep) || !std::isfinite(steeringTime))
+    {
+        throw std::invalid_argument
+        (
+            "stochastic cell: thermostatTime (the kicks' steering time) must exceed the time"
+            " step " + std::to_string(timeStep) + " s, got " + std::to_string(steeringTime)
+        );
+    }
+}
+
+void StochasticDriving::normals
+(
+    std::uint64_t seed,
+    std::uint64_t step,
+    std::uint64_t id,
+    double out[3]
+)
+{
+    using Philox = r123::Philox4x64;
+    const Philox::ctr_type counter = {{step, id, 0, 0}};
+    const Philox::key_type key = {{seed, kickStream}};
+    const Philox::ctr_type bits = Philox()(counter, key);
+    const r123::double2 a = r123::boxmuller(bits[0], bits[1]);
+    const r123::double2 b = r123::boxmuller(bits[2], bits[3]);
+    out[0] = a.x;
+    out[1] = a.y;
+    out[2] = b.x;
+}
+
+bool StochasticDriving::beginForcePass(int nParticles, bool endsStep)
+{
+    return sums_.begin(nParticles, endsStep);
+}
+
+void StochasticDriving::finishRange(const Particles& p, int begin, int end)
+{
+    sums_.addRange(p, begin, end);
+}
+
+void StochasticDriving::afterStep(Particles& p, int nThreads)
+{
+    const int n = int(p.size());
+    if (n < 2) return;
+    double u[3];
+    const double T = temperatureAboutMean(sums_.totals(p), n, u);
+
+    // Steering: L follows the fall of T over the step (the collisions' dissipation), and
+    // the kicks put back L plus a relaxation of T towards the target over tau
+    const double w = timeStep_/steeringTime_;
+    if (temperatureAfterKick_ >= 0)
+    {
+        dissipation_ += w*((temperatureAfterKick_ - T) - dissipation_);
+    }
+    kickVariance_ = std::max(0.0, dissipation_ + w*(targetTemperature_ - T))/3.0;
+    const double amplitude = std::sqrt(kickVariance_);
+
+    // The kicks, and their momentum per fixed chunk (summed in chunk order below)
+    kickX_.resize(std::size_t(n));
+    kickY_.resize(std::size_t(n));
+    kickZ_.resize(std::size_t(n));
+    const int nChunks = (n + finishChunk - 1)/finishChunk;
+    std::vector<std::array<double, 4>> chunkMomentum(static_cast<std::size_t>(nChunks));
+    #pragma omp parallel for num_threads(nThreads) schedule(static) if(nThreads > 1)
+    for (int c = 0; c < nChunks; ++c)
+    {
+        std::array<double, 4> sum{};
+        for (int i = c*finishChunk; i < std::min(n, (c + 1)*finishChunk); ++i)
+        {
+            double xi[3];
+            normals(seed_, step_, std::uint64_t(p.id[i]), xi);
+            kickX_[i] = amplitude*xi[0];
+            kickY_[i] = amplitude*xi[1];
+            kickZ_[i] = amplitude*xi[2];
+            const double m = p.mass[i];
+            sum[0] += m; sum[1] += m*kickX_[i]; sum[2] += m*kickY_[i]; sum[3] += m*kickZ_[i];
+        }
+        chunkMomentum[std::size_t(c)] = sum;
+    }
+    std::array<double, 4> total{};
+    for (const auto& sum : chunkMomentum)
+    {
+        for (int k = 0; k < 4; ++k) total[k] += sum[k];
+    }
+    const double ux = total[1]/total[0], uy = total[2]/total[0], uz = total[3]/total[0];
+    #pragma omp parallel for num_threads(nThreads) schedule(static) if(nThreads > 1)
+    for (int i = 0; i < n; ++i)
+    {
+        p.vx[i] += kickX_[i] - ux;
+        p.vy[i] += kickY_[i] - uy;
+        p.vz[i] += kickZ_[i] - uz;
+    }
+    temperatureAfterKick_ = temperatureAboutMean(VelocityChunkSums::sum(p), n, u);
+    ++step_;
+}
+
+std::vector<double> StochasticDriving::exportState() const
+{
+    // the step count as a double: exact below 2^53 steps
+    return {double(step_), dissipation_, temperatureAfterKick_, kickVariance_};
+}
+
+void StochasticDriving::importState(const std::vector<double>& state)
+{
+    if (state.size() != 4)
+    {
+        throw std::invalid_argument
+        (
+            "stochastic driving: a checkpoint's driving state holds 4 values (step,"
+            " dissipation, T after the kicks, kick variance), got "
+          + std::to_string(state.size())
+        );
+    }
+    step_ = std::uint64_t(state[0]);
+    dissipation_ = state[1];
+    temperatureAfterKick_ = state[2];
+    kickVariance_ = state[3];
+}
+
+} // namespace sdf::dem

@@ -1,0 +1,78 @@
+#ifndef sdf_dem_StochasticDriving_hpp
+#define sdf_dem_StochasticDriving_hpp
+
+// Local stochastic driving: every particle receives, after each step, an independent
+// Gaussian velocity kick (a white-noise acceleration of the same strength for every
+// particle, as the stochastic thermostat of the kinetic theory of driven granular gases:
+// van Noije & Ernst 1998, Granular Matter 1, 57; Garzo & Montanero 2004, Phys. Rev. E 69,
+// 021301), with the kicks' total momentum removed. The global velocity-rescaling
+// thermostat scales every velocity by one factor and so feeds any collective motion the
+// inelastic collisions start; independent kicks do not.
+//
+// The kicks' variance is steered, slowly, to hold the target T: a2 per component and step
+// = (L + (T0 - T) dt/tau)/3, L the dissipation per step (the fall of T over a step,
+// averaged exponentially over tau). At steady state the amplitude is constant to
+// fluctuations of relative order sqrt(dt/tau); tau (thermostatTime) defaults to 1000 dt
+// for this driving.
+//
+// Random numbers: Philox4x64-10 (Random123, Salmon et al. 2011) keyed on (seed, a
+// constant) with the counter (step, particle id), normal deviates by Box-Muller: a
+// particle's kicks depend on nothing but the seed, the step and its id, so the
+// trajectories stay independent of the number of threads and of the renumbering. The
+// kicks' momentum and the temperatures are summed per fixed chunk of particles in chunk
+// order.
+
+#include "Driving.hpp"
+
+#include <cstdint>
+#include <vector>
+
+namespace sdf::dem
+{
+
+class StochasticDriving : public Driving
+{
+public:
+    //- Throws std::invalid_argument naming the entry: targetTemperature > 0,
+    //  thermostatTime > timeStep > 0.
+    StochasticDriving
+    (
+        double targetTemperature,
+        double steeringTime,
+        double timeStep,
+        std::uint64_t seed
+    );
+
+    std::string name() const override { return cellModeName(CellMode::stochastic); }
+    bool beginForcePass(int nParticles, bool endsStep) override;
+    void finishRange(const Particles& particles, int begin, int end) override;
+    void afterStep(Particles& particles, int nThreads) override;
+    std::vector<double> exportState() const override;
+    void importState(const std::vector<double>& state) override;
+
+    //- The kicks' variance per component of the last step [m^2/s^2] (0 before the first).
+    double kickVariance() const { return kickVariance_; }
+
+    //- The three standard normal deviates of particle id at step (the kicks before
+    //  scaling and momentum removal): the counter-based stream, exposed for tests.
+    static void normals(std::uint64_t seed, std::uint64_t step, std::uint64_t id, double out[3]);
+
+private:
+    double targetTemperature_;
+    double steeringTime_;
+    double timeStep_;
+    std::uint64_t seed_;
+
+    // steering state (exported for a bitwise resume)
+    std::uint64_t step_ = 0;            // steps driven
+    double dissipation_ = 0;            // L: fall of T per step, averaged over tau
+    double temperatureAfterKick_ = -1;  // T just after the last kicks (< 0: none yet)
+    double kickVariance_ = 0;
+
+    VelocityChunkSums sums_;
+    std::vector<double> kickX_, kickY_, kickZ_;
+};
+
+} // namespace sdf::dem
+
+#endif
