@@ -254,9 +254,9 @@ sys.exit(0 if sum(a) == 0 else 1)" || return 1
 # the end plus what left (slot, inlet, top) equals the fill's to 1e-8 of it;
 # bounds at every written time; mass flow: in every row of the lower three
 # quarters of the hopper the wall cell moves at >= 0.3 of the centre cell's
-# speed at the last two writes (0.60-0.87 measured), where the flat bin of
+# speed at the last two writes (0.63-0.88 measured), where the flat bin of
 # the same width (20 mm slot) leaves its floor's corner stagnant (< 0.05 in
-# the two lowest rows; 0.004 measured). Refused: a half-angle outside (0,
+# the two lowest rows; below 1e-3 measured). Refused: a half-angle outside (0,
 # 90) and -hopper with -axisymmetric
 test_planar_silo_fill_hopper()
 {
