@@ -88,14 +88,25 @@ void StochasticDriving::afterStep(Particles& p, int nThreads)
     double u[3];
     const double T = temperatureAboutMean(sums_.totals(p), n, u);
 
-    // Steering: L follows the fall of T over the step (the collisions' dissipation), and
-    // the kicks put back L plus a relaxation of T towards the target over tau
+    // Steering: the collisions' dissipation per step, L (the fall of T over a step), is
+    // taken as c T^(3/2) (a hard-sphere gas's), c = <L>/<T^(3/2)> averaged over all steps
+    // so far and then exponentially over tau; the kicks put back c T0^(3/2) plus a
+    // relaxation of T towards T0 over tau. At steady state T = T0 whatever the true
+    // dependence on T (c is measured at that state), and T follows its error at the
+    // rate of its own dissipation: no slow integral loop (putting back <L> itself
+    // recovered from the start-up's transient with a root of only (dt/tau)^2/(dt dL/dT)
+    // per step: T 4.5 % low after 16 tau at phi 0.5)
     const double w = timeStep_/steeringTime_;
     if (temperatureAfterKick_ >= 0)
     {
-        dissipation_ += w*((temperatureAfterKick_ - T) - dissipation_);
+        const double weight = std::max(w, 1.0/double(std::max<std::uint64_t>(step_, 1)));
+        dissipation_ += weight*((temperatureAfterKick_ - T) - dissipation_);
+        temperaturePower_ += weight*(std::pow(T, 1.5) - temperaturePower_);
     }
-    kickVariance_ = std::max(0.0, dissipation_ + w*(targetTemperature_ - T))/3.0;
+    const double restore = temperaturePower_ > 0
+        ? dissipation_/temperaturePower_*std::pow(targetTemperature_, 1.5)
+        : dissipation_;
+    kickVariance_ = std::max(0.0, restore + w*(targetTemperature_ - T))/3.0;
     const double amplitude = std::sqrt(kickVariance_);
 
     // The kicks, and their momentum per fixed chunk (summed in chunk order below)
@@ -140,24 +151,25 @@ void StochasticDriving::afterStep(Particles& p, int nThreads)
 std::vector<double> StochasticDriving::exportState() const
 {
     // the step count as a double: exact below 2^53 steps
-    return {double(step_), dissipation_, temperatureAfterKick_, kickVariance_};
+    return {double(step_), dissipation_, temperaturePower_, temperatureAfterKick_, kickVariance_};
 }
 
 void StochasticDriving::importState(const std::vector<double>& state)
 {
-    if (state.size() != 4)
+    if (state.size() != 5)
     {
         throw std::invalid_argument
         (
-            "stochastic driving: a checkpoint's driving state holds 4 values (step,"
-            " dissipation, T after the kicks, kick variance), got "
+            "stochastic driving: a checkpoint's driving state holds 5 values (step,"
+            " dissipation, <T^1.5>, T after the kicks, kick variance), got "
           + std::to_string(state.size())
         );
     }
     step_ = std::uint64_t(state[0]);
     dissipation_ = state[1];
-    temperatureAfterKick_ = state[2];
-    kickVariance_ = state[3];
+    temperaturePower_ = state[2];
+    temperatureAfterKick_ = state[3];
+    kickVariance_ = state[4];
 }
 
 } // namespace sdf::dem

@@ -10,10 +10,11 @@
 // inelastic collisions start; independent kicks do not.
 //
 // The kicks' variance is steered, slowly, to hold the target T: a2 per component and step
-// = (L + (T0 - T) dt/tau)/3, L the dissipation per step (the fall of T over a step,
-// averaged exponentially over tau). At steady state the amplitude is constant to
-// fluctuations of relative order sqrt(dt/tau); tau (thermostatTime) defaults to 1000 dt
-// for this driving.
+// = (c T0^(3/2) + (T0 - T) dt/tau)/3, c = <L>/<T^(3/2)> from the dissipation per step L
+// (the fall of T over a step), averaged over all steps so far, then exponentially over
+// tau. At steady state the amplitude is constant to fluctuations of relative order
+// sqrt(dt/tau); tau (thermostatTime) defaults to 1000 dt for this driving: set it to
+// several collision times for a white noise of steady strength.
 //
 // Random numbers: Philox4x64-10 (Random123, Salmon et al. 2011) keyed on (seed, a
 // constant) with the counter (step, particle id), normal deviates by Box-Muller: a
@@ -65,7 +66,8 @@ private:
 
     // steering state (exported for a bitwise resume)
     std::uint64_t step_ = 0;            // steps driven
-    double dissipation_ = 0;            // L: fall of T per step, averaged over tau
+    double dissipation_ = 0;            // <L>: fall of T per step, averaged over tau
+    double temperaturePower_ = 0;       // <T^(3/2)> over the same steps
     double temperatureAfterKick_ = -1;  // T just after the last kicks (< 0: none yet)
     double kickVariance_ = 0;
 

@@ -75,7 +75,7 @@ TEST(StochasticDriving, InelasticCellHeldAtTargetWithMomentumKept)
     const double drift = (sim.totalMomentum() - p0).norm()/(massSum*vScale);
     std::cout << "T/T_target = " << meanT/target << ", momentum drift / (M sqrt(T/3)) = "
               << drift << "\n";
-    EXPECT_NEAR(meanT/target, 1.0, 0.03);
+    EXPECT_NEAR(meanT/target, 1.0, 0.01);   // 0.99997 measured
     EXPECT_LT(drift, 1e-10);
 }
 
@@ -103,7 +103,7 @@ TEST(StochasticDriving, OneTwoAndThreeThreadsAndResumeBitwiseIdentical)
     // resumed at step 1700 from the exported state (the driving's steering included)
     Simulation first = run(2, 1700);
     const SimulationState state = first.exportState();
-    ASSERT_EQ(state.driving.size(), 4u);
+    ASSERT_EQ(state.driving.size(), 5u);
     Packing packing = test::packedCell(species, {300, 40}, 0.35, target, 0, 5);
     SimulationSettings s = stochasticSettings(target, 2);
     s.renumberEvery = 500;
@@ -143,12 +143,12 @@ TEST(StochasticDriving, BadSettingsRefusedNamingTheEntry)
     {
         EXPECT_NE(std::string(e.what()).find("stochastic"), std::string::npos);
     }
-    // a state of another driving (4 values) refused by the thermostat, and vice versa
+    // a state of another driving (5 values) refused by the thermostat, and vice versa
     SimulationSettings rescaled = stochasticSettings(0.01, 1);
     rescaled.mode = CellMode::thermostatted;
     Simulation sim(species, rescaled, packing.particles, packing.box);
     SimulationState state = sim.exportState();
-    state.driving = {1, 2, 3, 4};
+    state.driving = {1, 2, 3, 4, 5};
     EXPECT_THROW(sim.importState(state), std::invalid_argument);
     Simulation stochastic(species, stochasticSettings(0.01, 1), packing.particles, packing.box);
     state.driving = {};
