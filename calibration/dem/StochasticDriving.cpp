@@ -55,13 +55,13 @@ StochasticDriving::StochasticDriving
 void StochasticDriving::normals
 (
     std::uint64_t seed,
-    std::uint64_t step,
+    std::uint64_t kick,
     std::uint64_t id,
     double out[3]
 )
 {
     using Philox = r123::Philox4x64;
-    const Philox::ctr_type counter = {{step, id, 0, 0}};
+    const Philox::ctr_type counter = {{kick, id, 0, 0}};
     const Philox::key_type key = {{seed, kickStream}};
     const Philox::ctr_type bits = Philox()(counter, key);
     const r123::double2 a = r123::boxmuller(bits[0], bits[1]);
@@ -90,7 +90,7 @@ void StochasticDriving::afterStep(Particles& p, int nThreads)
 
     // Steering: the collisions' dissipation per step, L (the fall of T over a step), is
     // taken as c T^(3/2) (a hard-sphere gas's), c = <L>/<T^(3/2)> averaged over all steps
-    // so far and then exponentially over tau; the kicks put back c T0^(3/2) plus a
+    // so far and then exponentially over tau; the kicks put back c T0^(3/2) a step plus a
     // relaxation of T towards T0 over tau. At steady state T = T0 whatever the true
     // dependence on T (c is measured at that state), and T follows its error at the
     // rate of its own dissipation: no slow integral loop (putting back <L> itself
@@ -103,16 +103,23 @@ void StochasticDriving::afterStep(Particles& p, int nThreads)
         dissipation_ += weight*((temperatureAfterKick_ - T) - dissipation_);
         temperaturePower_ += weight*(std::pow(T, 1.5) - temperaturePower_);
     }
+    const std::uint64_t step = step_++;
+    if ((step + 1) % kickInterval != 0)
+    {
+        temperatureAfterKick_ = T;
+        return;
+    }
     const double restore = temperaturePower_ > 0
         ? dissipation_/temperaturePower_*std::pow(targetTemperature_, 1.5)
         : dissipation_;
-    kickVariance_ = std::max(0.0, restore + w*(targetTemperature_ - T))/3.0;
+    kickVariance_ = std::max(0.0, kickInterval*(restore + w*(targetTemperature_ - T)))/3.0;
     const double amplitude = std::sqrt(kickVariance_);
 
     // The kicks, and their momentum per fixed chunk (summed in chunk order below)
     kickX_.resize(std::size_t(n));
     kickY_.resize(std::size_t(n));
     kickZ_.resize(std::size_t(n));
+    const std::uint64_t kick = step/kickInterval;
     const int nChunks = (n + finishChunk - 1)/finishChunk;
     std::vector<std::array<double, 4>> chunkMomentum(static_cast<std::size_t>(nChunks));
     #pragma omp parallel for num_threads(nThreads) schedule(static) if(nThreads > 1)
@@ -122,7 +129,7 @@ void StochasticDriving::afterStep(Particles& p, int nThreads)
         for (int i = c*finishChunk; i < std::min(n, (c + 1)*finishChunk); ++i)
         {
             double xi[3];
-            normals(seed_, step_, std::uint64_t(p.id[i]), xi);
+            normals(seed_, kick, std::uint64_t(p.id[i]), xi);
             kickX_[i] = amplitude*xi[0];
             kickY_[i] = amplitude*xi[1];
             kickZ_[i] = amplitude*xi[2];
@@ -145,7 +152,6 @@ void StochasticDriving::afterStep(Particles& p, int nThreads)
         p.vz[i] += kickZ_[i] - uz;
     }
     temperatureAfterKick_ = temperatureAboutMean(VelocityChunkSums::sum(p), n, u);
-    ++step_;
 }
 
 std::vector<double> StochasticDriving::exportState() const

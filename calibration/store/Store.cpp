@@ -274,6 +274,12 @@ std::string settingsKey(const dem::CellRunSettings& b, const std::string& contac
         << "; maxEquilibrationTime " << fmt10(b.maxEquilibrationTime)
         << "; samplingTime " << fmt10(b.samplingTime)
         << "; sampleEvery " << b.sampleEvery << "; blocks " << b.blocks;
+    // the driving: named only when it is not the velocity-rescaling thermostat, so the
+    // keys of stores written before the choice existed stay valid
+    if (sim.mode != dem::CellMode::thermostatted)
+    {
+        key << "; mode " << dem::cellModeName(sim.mode);
+    }
     return key.str();
 }
 

@@ -87,8 +87,8 @@ test_calibration_resume()
 test_calibration_bad_input()
 {
     local dir="$workRoot/calibrationBad" kind
-    local kinds="unknownCoefficient unknownLaw emptyPhi invertedT jammedPhi negativeT xOutside textStore foreignHdf5"
-    [ -f "$workRoot/calibration/constant/calibration.h5" ] && kinds="$kinds truncatedStore settingsChanged"
+    local kinds="unknownCoefficient unknownLaw emptyPhi invertedT jammedPhi negativeT xOutside textStore foreignHdf5 shearedMode"
+    [ -f "$workRoot/calibration/constant/calibration.h5" ] && kinds="$kinds truncatedStore settingsChanged drivingChanged"
     for kind in $kinds
     do
         copy_calibration_case "$dir"
@@ -106,6 +106,10 @@ test_calibration_bad_input()
             settingsChanged) cp "$workRoot/calibration/constant/calibration.h5" "$dir/constant/"
                 foamDictionary -entry phi -set "(0.2 0.35 0.5)" "$d" > /dev/null
                 foamDictionary -entry particles -set 300 "$d" > /dev/null; expect="other DEM settings" ;;
+            shearedMode) foamDictionary -entry mode -set leesEdwards "$d" > /dev/null; expect="stochastic" ;;
+            drivingChanged) cp "$workRoot/calibration/constant/calibration.h5" "$dir/constant/"
+                foamDictionary -entry phi -set "(0.2 0.35 0.5)" "$d" > /dev/null
+                foamDictionary -entry mode -set stochastic "$d" > /dev/null; expect="other DEM settings" ;;
             truncatedStore) head -c 3000 "$workRoot/calibration/constant/calibration.h5" > "$dir/constant/calibration.h5"; expect="calibration.h5" ;;
         esac
         local before=""

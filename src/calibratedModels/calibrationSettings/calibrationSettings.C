@@ -293,11 +293,12 @@ Foam::calibrationSettings::calibrationSettings
     };
     b.particles = dict.getOrDefault<label>("particles", 1000);
     const word mode(dict.getOrDefault<word>("mode", "thermostatted"));
-    if (mode != "thermostatted")
+    if (mode != "thermostatted" && mode != "stochastic")
     {
         FatalIOErrorInFunction(dict)
             << "Entry 'mode' " << mode << ": the calibration runs driven"
-            << " cells only (mode thermostatted)" << nl
+            << " homogeneous cells; valid: thermostatted (velocity rescaling),"
+            << " stochastic (random kicks per particle)" << nl
             << exit(FatalIOError);
     }
     b.simulation.mode = sdf::dem::cellModeFromName(mode);
