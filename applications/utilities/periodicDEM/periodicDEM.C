@@ -23,7 +23,7 @@ Description
     composition     { fine 0.8; coarse 0.2; }   // share of the solids volume
     particles       1000;
     solidsFraction  0.3;
-    mode            thermostatted;  // nve | thermostatted | leesEdwards
+    mode            thermostatted;  // nve | thermostatted | stochastic | leesEdwards
     temperature     0.03;           // target T, sum of 3 components [m2/s2]
     shearRate       10;             // [1/s], leesEdwards
     contact
