@@ -100,8 +100,9 @@ void StochasticDriving::afterStep(Particles& p, int nThreads)
     if (temperatureAfterKick_ >= 0)
     {
         const double weight = std::max(w, 1.0/double(std::max<std::uint64_t>(step_, 1)));
+        // (T can come out a rounding error below 0 in a cell at rest)
         dissipation_ += weight*((temperatureAfterKick_ - T) - dissipation_);
-        temperaturePower_ += weight*(std::pow(T, 1.5) - temperaturePower_);
+        temperaturePower_ += weight*(std::pow(std::max(T, 0.0), 1.5) - temperaturePower_);
     }
     const std::uint64_t step = step_++;
     if ((step + 1) % kickInterval != 0)
@@ -112,7 +113,15 @@ void StochasticDriving::afterStep(Particles& p, int nThreads)
     const double restore = temperaturePower_ > 0
         ? dissipation_/temperaturePower_*std::pow(targetTemperature_, 1.5)
         : dissipation_;
-    kickVariance_ = std::max(0.0, kickInterval*(restore + w*(targetTemperature_ - T)))/3.0;
+    // Removing the kicks' mass-weighted mean leaves sum_i |kick_i - U|^2/n =
+    // 3 a2 (1 - 2/n + sum m^2/M^2) on average: divided out (1/n of T at equal masses)
+    if (!(massSum_ > 0))
+    {
+        for (int i = 0; i < n; ++i) { massSum_ += p.mass[i]; massSquareSum_ += p.mass[i]*p.mass[i]; }
+    }
+    const double kept = 1 - 2.0/n + massSquareSum_/(massSum_*massSum_);
+    kickVariance_ =
+        std::max(0.0, kickInterval*(restore + w*(targetTemperature_ - T)))/(3.0*kept);
     const double amplitude = std::sqrt(kickVariance_);
 
     // The kicks, and their momentum per fixed chunk (summed in chunk order below)
@@ -143,6 +152,7 @@ void StochasticDriving::afterStep(Particles& p, int nThreads)
     {
         for (int k = 0; k < 4; ++k) total[k] += sum[k];
     }
+    if (!(total[0] > 0)) return;
     const double ux = total[1]/total[0], uy = total[2]/total[0], uz = total[3]/total[0];
     #pragma omp parallel for num_threads(nThreads) schedule(static) if(nThreads > 1)
     for (int i = 0; i < n; ++i)
@@ -156,19 +166,33 @@ void StochasticDriving::afterStep(Particles& p, int nThreads)
 
 std::vector<double> StochasticDriving::exportState() const
 {
-    // the step count as a double: exact below 2^53 steps
-    return {double(step_), dissipation_, temperaturePower_, temperatureAfterKick_, kickVariance_};
+    // the step count as a double: exact below 2^53 steps; the seed in two exact halves
+    // (a resume with another seed would change the kicks unnoticed)
+    return
+    {
+        double(step_), dissipation_, temperaturePower_, temperatureAfterKick_, kickVariance_,
+        double(seed_ >> 32), double(seed_ & 0xffffffffULL)
+    };
 }
 
 void StochasticDriving::importState(const std::vector<double>& state)
 {
-    if (state.size() != 5)
+    if (state.size() != 7)
     {
         throw std::invalid_argument
         (
-            "stochastic driving: a checkpoint's driving state holds 5 values (step,"
-            " dissipation, <T^1.5>, T after the kicks, kick variance), got "
+            "stochastic driving: a checkpoint's driving state holds 7 values (step,"
+            " dissipation, <T^1.5>, T after the kicks, kick variance, seed), got "
           + std::to_string(state.size())
+        );
+    }
+    const std::uint64_t seed = (std::uint64_t(state[5]) << 32) | std::uint64_t(state[6]);
+    if (seed != seed_)
+    {
+        throw std::invalid_argument
+        (
+            "stochastic driving: the checkpoint was run with seed " + std::to_string(seed)
+          + ", this run has seed " + std::to_string(seed_) + " (entry 'seed')"
         );
     }
     step_ = std::uint64_t(state[0]);

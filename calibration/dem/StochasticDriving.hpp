@@ -12,9 +12,12 @@
 // The kicks' variance is steered, slowly, to hold the target T: a2 per component and step
 // = (c T0^(3/2) + (T0 - T) dt/tau)/3, c = <L>/<T^(3/2)> from the dissipation per step L
 // (the fall of T over a step), averaged over all steps so far, then exponentially over
-// tau. At steady state the amplitude is constant to fluctuations of relative order
-// sqrt(dt/tau); tau (thermostatTime) defaults to 1000 dt for this driving: set it to
-// several collision times for a white noise of steady strength.
+// tau, and divided by the share of the kicks' energy their momentum removal keeps
+// (1 - 2/n + sum m^2/M^2). At steady state the mean T is T0 to within a kick's
+// increment, 10 L (6e-4 of T in the dense cell of benchmarks/demDriving; samples every
+// 10 steps come just after kicks), the amplitude constant to fluctuations of relative
+// order sqrt(dt/tau). tau (thermostatTime) defaults to 1000 dt for this driving: set it
+// to several collision times for a white noise of steady strength.
 //
 // The kicks come every kickInterval (10) steps, with the variance of as many: the time
 // step is at most a fiftieth of a contact's duration, so they still come five times in
@@ -79,6 +82,8 @@ private:
     double temperaturePower_ = 0;       // <T^(3/2)> over the same steps
     double temperatureAfterKick_ = -1;  // T just after the last kicks (< 0: none yet)
     double kickVariance_ = 0;
+
+    double massSum_ = 0, massSquareSum_ = 0;   // of the particles (fixed), at the first kick
 
     VelocityChunkSums sums_;
     std::vector<double> kickX_, kickY_, kickZ_;

@@ -1,5 +1,5 @@
 // Stochastic driving (StochasticDriving): random kicks per particle, their momentum
-// removed, their variance steered to the target T. The kicks depend only on (seed, step,
+// removed, their variance steered to the target T. The kicks depend only on (seed, kick,
 // particle id): 1, 2 and 3 threads give bitwise the same trajectories, and a resumed run
 // continues bitwise; an inelastic cell is held at the target T with its momentum kept;
 // bad settings are refused naming the entry.
@@ -100,16 +100,17 @@ TEST(StochasticDriving, OneTwoAndThreeThreadsAndResumeBitwiseIdentical)
         EXPECT_TRUE(test::bitwiseEqual(a.particles().vz, b.particles().vz)) << threads << " threads";
         EXPECT_TRUE(test::bitwiseEqual(a.particles().wx, b.particles().wx)) << threads << " threads";
     }
-    // resumed at step 1700 from the exported state (the driving's steering included)
-    Simulation first = run(2, 1700);
+    // resumed at step 1703 (between kicks) from the exported state (the driving's
+    // steering included)
+    Simulation first = run(2, 1703);
     const SimulationState state = first.exportState();
-    ASSERT_EQ(state.driving.size(), 5u);
+    ASSERT_EQ(state.driving.size(), 7u);
     Packing packing = test::packedCell(species, {300, 40}, 0.35, target, 0, 5);
     SimulationSettings s = stochasticSettings(target, 2);
     s.renumberEvery = 500;
     Simulation resumed(species, s, packing.particles, packing.box);
     resumed.importState(state);
-    resumed.run(1300);
+    resumed.run(1297);
     EXPECT_TRUE(test::bitwiseEqual(a.particles().x, resumed.particles().x));
     EXPECT_TRUE(test::bitwiseEqual(a.particles().vy, resumed.particles().vy));
 }
@@ -143,14 +144,25 @@ TEST(StochasticDriving, BadSettingsRefusedNamingTheEntry)
     {
         EXPECT_NE(std::string(e.what()).find("stochastic"), std::string::npos);
     }
-    // a state of another driving (5 values) refused by the thermostat, and vice versa
+    // a state of another driving (7 values) refused by the thermostat, and vice versa
     SimulationSettings rescaled = stochasticSettings(0.01, 1);
     rescaled.mode = CellMode::thermostatted;
     Simulation sim(species, rescaled, packing.particles, packing.box);
     SimulationState state = sim.exportState();
-    state.driving = {1, 2, 3, 4, 5};
+    state.driving = {1, 2, 3, 4, 5, 0, 7};
     EXPECT_THROW(sim.importState(state), std::invalid_argument);
     Simulation stochastic(species, stochasticSettings(0.01, 1), packing.particles, packing.box);
     state.driving = {};
     EXPECT_THROW(stochastic.importState(state), std::invalid_argument);
+    // a checkpoint of another seed (7 here, 8 in the state) names the entry
+    state.driving = {0, 0, 0, -1, 0, 0, 8};
+    try
+    {
+        stochastic.importState(state);
+        ADD_FAILURE() << "a checkpoint of another seed accepted";
+    }
+    catch (const std::invalid_argument& e)
+    {
+        EXPECT_NE(std::string(e.what()).find("'seed'"), std::string::npos) << e.what();
+    }
 }
