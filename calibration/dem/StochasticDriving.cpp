@@ -113,53 +113,55 @@ void StochasticDriving::afterStep(Particles& p, int nThreads)
     const double restore = temperaturePower_ > 0
         ? dissipation_/temperaturePower_*std::pow(targetTemperature_, 1.5)
         : dissipation_;
-    // Removing the kicks' mass-weighted mean leaves sum_i |kick_i - U|^2/n =
-    // 3 a2 (1 - 2/n + sum m^2/M^2) on average: divided out (1/n of T at equal masses)
-    if (!(massSum_ > 0))
-    {
-        for (int i = 0; i < n; ++i) { massSum_ += p.mass[i]; massSquareSum_ += p.mass[i]*p.mass[i]; }
-    }
-    const double kept = 1 - 2.0/n + massSquareSum_/(massSum_*massSum_);
-    kickVariance_ =
-        std::max(0.0, kickInterval*(restore + w*(targetTemperature_ - T)))/(3.0*kept);
-    const double amplitude = std::sqrt(kickVariance_);
 
-    // The kicks, and their momentum per fixed chunk (summed in chunk order below)
-    kickX_.resize(std::size_t(n));
-    kickY_.resize(std::size_t(n));
-    kickZ_.resize(std::size_t(n));
+    // The kicks' standard normals, and per fixed chunk (summed in chunk order below: the
+    // same totals whatever the threads, and in a resumed run) the mass, its square and
+    // the normals' momentum
+    normalX_.resize(std::size_t(n));
+    normalY_.resize(std::size_t(n));
+    normalZ_.resize(std::size_t(n));
     const std::uint64_t kick = step/kickInterval;
     const int nChunks = (n + finishChunk - 1)/finishChunk;
-    std::vector<std::array<double, 4>> chunkMomentum(static_cast<std::size_t>(nChunks));
+    std::vector<std::array<double, 5>> chunkSums(static_cast<std::size_t>(nChunks));
     #pragma omp parallel for num_threads(nThreads) schedule(static) if(nThreads > 1)
     for (int c = 0; c < nChunks; ++c)
     {
-        std::array<double, 4> sum{};
+        std::array<double, 5> sum{};
         for (int i = c*finishChunk; i < std::min(n, (c + 1)*finishChunk); ++i)
         {
             double xi[3];
             normals(seed_, kick, std::uint64_t(p.id[i]), xi);
-            kickX_[i] = amplitude*xi[0];
-            kickY_[i] = amplitude*xi[1];
-            kickZ_[i] = amplitude*xi[2];
+            normalX_[i] = xi[0];
+            normalY_[i] = xi[1];
+            normalZ_[i] = xi[2];
             const double m = p.mass[i];
-            sum[0] += m; sum[1] += m*kickX_[i]; sum[2] += m*kickY_[i]; sum[3] += m*kickZ_[i];
+            sum[0] += m; sum[1] += m*m;
+            sum[2] += m*xi[0]; sum[3] += m*xi[1]; sum[4] += m*xi[2];
         }
-        chunkMomentum[std::size_t(c)] = sum;
+        chunkSums[std::size_t(c)] = sum;
     }
-    std::array<double, 4> total{};
-    for (const auto& sum : chunkMomentum)
+    std::array<double, 5> total{};
+    for (const auto& sum : chunkSums)
     {
-        for (int k = 0; k < 4; ++k) total[k] += sum[k];
+        for (int k = 0; k < 5; ++k) total[k] += sum[k];
     }
     if (!(total[0] > 0)) return;
-    const double ux = total[1]/total[0], uy = total[2]/total[0], uz = total[3]/total[0];
+
+    // Removing the kicks' mass-weighted mean U leaves sum_i |kick_i - U|^2/n =
+    // 3 a2 (1 - 2/n + sum m^2/M^2) on average: divided out (1/n of T at equal masses)
+    const double kept = 1 - 2.0/n + total[1]/(total[0]*total[0]);
+    kickVariance_ =
+        std::max(0.0, kickInterval*(restore + w*(targetTemperature_ - T)))/(3.0*kept);
+    const double amplitude = std::sqrt(kickVariance_);
+    const double ux = amplitude*total[2]/total[0];
+    const double uy = amplitude*total[3]/total[0];
+    const double uz = amplitude*total[4]/total[0];
     #pragma omp parallel for num_threads(nThreads) schedule(static) if(nThreads > 1)
     for (int i = 0; i < n; ++i)
     {
-        p.vx[i] += kickX_[i] - ux;
-        p.vy[i] += kickY_[i] - uy;
-        p.vz[i] += kickZ_[i] - uz;
+        p.vx[i] += amplitude*normalX_[i] - ux;
+        p.vy[i] += amplitude*normalY_[i] - uy;
+        p.vz[i] += amplitude*normalZ_[i] - uz;
     }
     temperatureAfterKick_ = temperatureAboutMean(VelocityChunkSums::sum(p), n, u);
 }

@@ -83,10 +83,8 @@ private:
     double temperatureAfterKick_ = -1;  // T just after the last kicks (< 0: none yet)
     double kickVariance_ = 0;
 
-    double massSum_ = 0, massSquareSum_ = 0;   // of the particles (fixed), at the first kick
-
     VelocityChunkSums sums_;
-    std::vector<double> kickX_, kickY_, kickZ_;
+    std::vector<double> normalX_, normalY_, normalZ_;   // the kick's normals (scratch)
 };
 
 } // namespace sdf::dem
