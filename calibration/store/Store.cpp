@@ -48,6 +48,14 @@ SpeciesRecord readSpecies(const io::Group& g)
     }
     s.D = g.readDouble("D");
     s.DError = optionalDouble(g, "DError");
+    s.DMsd = optionalDouble(g, "DMsd");
+    if (g.hasGroup("diffusiveRegime"))
+    {
+        const io::Group r = g.openGroup("diffusiveRegime");
+        s.DConverged = r.readInt64("converged") != 0;
+        s.DVerdict = r.readString("verdict");
+        s.DSlopeChange = r.readDouble("slopeChange");
+    }
     s.eta = optionalDouble(g, "eta");
     s.etaError = optionalDouble(g, "etaError");
     return s;
@@ -338,6 +346,7 @@ void appendCondition
             sg.setAttribute("DPlateauFound", std::int64_t(st.greenKubo.plateauFound ? 1 : 0));
             sg.setAttribute("DMsd", st.diffusivityMsd.value);
             sg.setAttribute("DMsdError", st.diffusivityMsd.standardError);
+            dem::writeDiffusiveRegime(sg.createGroup("diffusiveRegime"), st.diffusiveRegime);
             if (i < r.kineticSieving.size())
             {
                 sg.setAttribute("eta", r.kineticSieving[i].value);

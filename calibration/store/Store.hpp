@@ -13,6 +13,11 @@
 //   /conditions/<name>/species/<species>
 //                            role (fine | coarse), d, count, T, D, DError,
 //                            DPlateauFound, DMsd, DMsdError, eta, etaError
+//   /conditions/<name>/species/<species>/diffusiveRegime
+//                            the diffusive-regime check of D (dem::writeDiffusiveRegime:
+//                            converged, verdict, correlationTime, fitStart, fitEnd,
+//                            slopes and differences with errors, the items' flags);
+//                            absent in stores written before the check existed
 //   /conditions/<name>/collisions
 //                            attributes elapsedTime [s] (over which collisions were
 //                            counted), impactEnergy (its definition); dataset
@@ -144,6 +149,12 @@ struct SpeciesRecord
     std::optional<std::int64_t> count;   // particles of the species in the cell
     double D = 0;
     std::optional<double> DError;
+    std::optional<double> DMsd;
+    //- The diffusive-regime check (absent in older stores): converged, its verdict,
+    //  and the change of the MSD's slope over the window (late - early half).
+    std::optional<bool> DConverged;
+    std::string DVerdict;
+    double DSlopeChange = 0;
     std::optional<double> eta;        // engine units (kg^2 m s^-3)
     std::optional<double> etaError;
 };

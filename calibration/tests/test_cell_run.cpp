@@ -60,6 +60,20 @@ TEST(CellRun, DiluteGasPipelineAndHdf5)
     const double omegaE = 4*n*sigma*sigma*g0*std::sqrt(M_PI*T1);
     EXPECT_NEAR(r.collisions.frequencyPerParticle(0, 0, r.speciesCounts)/omegaE, 1.0, 0.05);
 
+    // 0.16 s is ~10 velocity correlation times: the diffusive-regime check must say
+    // that the blocks (0.04 s) are too short for the MSD's window
+    const auto& check = st.diffusiveRegime;
+    EXPECT_GT(check.correlationTime, 0.005);
+    EXPECT_LT(check.correlationTime, 0.05);
+    EXPECT_FALSE(check.windowPastDecay);
+    EXPECT_FALSE(check.converged());
+    EXPECT_NE(check.verdict().find("before the VACF's decay"), std::string::npos);
+    // An elastic gas has no collective motion: the shear modes at equipartition
+    // (the longitudinal ones are sound waves, periods near the run's length: not asserted)
+    EXPECT_GT(r.collectiveMotionTransverse.standardError, 0);
+    EXPECT_LT(r.collectiveMotionTransverse.standardError, 0.3);
+    EXPECT_NEAR(r.collectiveMotionTransverse.value, 1.0, 3*r.collectiveMotionTransverse.standardError);
+
     const std::string path = "cell_run_test.h5";
     std::remove(path.c_str());
     writeCellRun(r, path);
@@ -71,6 +85,16 @@ TEST(CellRun, DiluteGasPipelineAndHdf5)
         .openGroup("greenKubo");
     EXPECT_DOUBLE_EQ(gk.readDouble("value"), st.greenKubo.integral.value);
     EXPECT_EQ(gk.readVector("correlation").size(), st.greenKubo.meanCorrelation.size());
+    const sdf::io::Group regime = root.openGroup("results").openGroup("species")
+        .openGroup("glass").openGroup("diffusiveRegime");
+    EXPECT_EQ(regime.readInt64("converged"), 0);
+    EXPECT_EQ(regime.readString("verdict"), check.verdict());
+    EXPECT_DOUBLE_EQ(regime.readDouble("correlationTime"), check.correlationTime);
+    EXPECT_DOUBLE_EQ
+    (
+        root.openGroup("results").readDouble("collectiveMotionTransverse"),
+        r.collectiveMotionTransverse.value
+    );
     EXPECT_EQ(root.openGroup("results").openGroup("collisions").readInt64Vector("counts")[0],
               r.collisions.counts[0]);
 }

@@ -227,6 +227,7 @@ Measurements makeMeasurements
         m.push_back(std::make_unique<VelocityAutocorrelation>(members, plan));
         m.push_back(std::make_unique<MeanSquareDisplacementMeasurement>(members, plan, settings.maxMsdFrames));
         m.push_back(std::make_unique<StressAutocorrelation>(species, sim.box().volume(), plan));
+        m.push_back(std::make_unique<CollectiveMotionMeasurement>(plan.blocks));
     }
     m.push_back(std::make_unique<CollisionMeasurement>(sim, energyScale));
     return m;

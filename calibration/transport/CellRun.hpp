@@ -13,12 +13,18 @@
 
 #include "Simulation.hpp"
 
+#include "correlation/DiffusiveRegime.hpp"
 #include "correlation/GreenKubo.hpp"
 #include "correlation/StressGreenKubo.hpp"
 
 #include <array>
 #include <string>
 #include <vector>
+
+namespace sdf::io
+{
+class Group;
+}
 
 namespace sdf::dem
 {
@@ -84,6 +90,9 @@ struct SpeciesTransport
     correlation::GreenKuboResult greenKubo;       // D from the VACF (per component)
     correlation::Estimate diffusivityMsd;         // Einstein slope, block error
     std::vector<double> msdTimes, msd;            // mean MSD (per component)
+    //- Green-Kubo and MSD in the diffusive regime? (not run: converged() false,
+    //  correlationTime 0)
+    correlation::DiffusiveRegimeCheck diffusiveRegime;
 };
 
 struct CellRunResult
@@ -106,6 +115,11 @@ struct CellRunResult
     correlation::StressProductIntegrals stressIntegrals;
     std::vector<correlation::Estimate> kineticSieving;   // binary mixtures only
     CollisionStatistics collisions;
+    //- Kinetic energy of the longest-wavelength modes of the momentum density over
+    //  equipartition (1: no collective motion), transverse (shear) and longitudinal
+    //  components; block mean and error (Measurements.hpp CollectiveMotionMeasurement)
+    correlation::Estimate collectiveMotionTransverse;
+    correlation::Estimate collectiveMotionLongitudinal;
     std::vector<int> speciesCounts;
     bool interrupted = false;              // stopped by stopAfterSteps: results incomplete
     bool resumed = false;                  // continued from a checkpoint
@@ -120,6 +134,11 @@ struct CellRunResult
 };
 
 CellRunResult runCell(const CellRunSettings& settings);
+
+//- The diffusive-regime check as attributes of g (converged, verdict, correlationTime,
+//  fitStart, fitEnd, the slopes and differences with their errors, the four items'
+//  flags): the cell file's and the calibration store's.
+void writeDiffusiveRegime(const io::Group& g, const correlation::DiffusiveRegimeCheck& check);
 
 //- Human-readable summary.
 std::string summary(const CellRunResult& result);

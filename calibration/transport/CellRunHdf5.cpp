@@ -23,6 +23,35 @@ void writeGreenKubo(const io::Group& g, const correlation::GreenKuboResult& gk)
     g.writeVector("runningIntegralError", gk.runningIntegralError);
 }
 
+} // namespace
+
+
+void writeDiffusiveRegime(const io::Group& g, const correlation::DiffusiveRegimeCheck& c)
+{
+    g.setAttribute("converged", std::int64_t(c.converged() ? 1 : 0));
+    g.setAttribute("verdict", c.verdict());
+    g.setAttribute("correlationTime", c.correlationTime);
+    g.setAttribute("fitStart", c.fitStart);
+    g.setAttribute("fitEnd", c.fitEnd);
+    const auto estimate = [&g](const std::string& name, const correlation::Estimate& e)
+    {
+        g.setAttribute(name, e.value);
+        g.setAttribute(name + "Error", e.standardError);
+    };
+    estimate("earlySlope", c.earlySlope);
+    estimate("lateSlope", c.lateSlope);
+    estimate("slopeChange", c.slopeChange);
+    estimate("greenKuboMinusMsd", c.greenKuboMinusMsd);
+    g.setAttribute("windowPastDecay", std::int64_t(c.windowPastDecay ? 1 : 0));
+    g.setAttribute("slopeFlat", std::int64_t(c.slopeFlat ? 1 : 0));
+    g.setAttribute("greenKuboAgrees", std::int64_t(c.greenKuboAgrees ? 1 : 0));
+    g.setAttribute("plateauFound", std::int64_t(c.plateauFound ? 1 : 0));
+}
+
+
+namespace
+{
+
 //- inputs: the cell's settings
 void writeInputs(const io::Group& inputs, const CellRunResult& r)
 {
@@ -85,6 +114,10 @@ void writeSpeciesResults(const io::Group& res, const CellRunResult& r)
     res.setAttribute("meanDiameter", r.meanDiameter);
     res.setAttribute("savageJeffreyR", r.savageJeffreyR);
     res.setAttribute("diffusionComponent", std::int64_t(r.diffusionComponent));
+    res.setAttribute("collectiveMotionTransverse", r.collectiveMotionTransverse.value);
+    res.setAttribute("collectiveMotionTransverseError", r.collectiveMotionTransverse.standardError);
+    res.setAttribute("collectiveMotionLongitudinal", r.collectiveMotionLongitudinal.value);
+    res.setAttribute("collectiveMotionLongitudinalError", r.collectiveMotionLongitudinal.standardError);
     const io::Group sp = res.createGroup("species");
     for (const SpeciesTransport& st : r.species)
     {
@@ -94,6 +127,7 @@ void writeSpeciesResults(const io::Group& res, const CellRunResult& r)
         g.setAttribute("diffusivityMsd", st.diffusivityMsd.value);
         g.setAttribute("diffusivityMsdError", st.diffusivityMsd.standardError);
         writeGreenKubo(g.createGroup("greenKubo"), st.greenKubo);
+        writeDiffusiveRegime(g.createGroup("diffusiveRegime"), st.diffusiveRegime);
         if (!st.msd.empty())
         {
             g.writeVector("msdTimes", st.msdTimes);

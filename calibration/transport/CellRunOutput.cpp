@@ -59,6 +59,15 @@ std::string summary(const CellRunResult& r)
         out << "  gammaDot = " << s.simulation.shearRate << " 1/s, Savage-Jeffrey R = "
             << r.savageJeffreyR << "\n";
     }
+    if (r.collectiveMotionTransverse.samples > 0)
+    {
+        out << "  longest-wavelength momentum modes / equipartition: transverse "
+            << r.collectiveMotionTransverse.value << " +- "
+            << r.collectiveMotionTransverse.standardError << ", longitudinal "
+            << r.collectiveMotionLongitudinal.value << " +- "
+            << r.collectiveMotionLongitudinal.standardError
+            << " (1: no collective motion)\n";
+    }
     if (r.settings.throughputOnly)
     {
         out << "  throughput " << r.particleStepsPerSecond << " particle-steps/s ("
@@ -90,6 +99,18 @@ std::string summary(const CellRunResult& r)
             << (st.greenKubo.plateauFound ? "" : " (no plateau)")
             << ", D_MSD = " << st.diffusivityMsd.value << " +- "
             << st.diffusivityMsd.standardError << " m2/s\n";
+        const correlation::DiffusiveRegimeCheck& c = st.diffusiveRegime;
+        if (c.correlationTime <= 0) continue;
+        out << "    diffusive regime: " << (c.converged() ? "yes" : "NO, ")
+            << (c.converged() ? "" : c.verdict()) << " (" << c.figures()
+            << "; tau_v = " << c.correlationTime
+            << " s, MSD window " << c.fitStart << " - " << c.fitEnd << " s";
+        if (r.settings.simulation.mode == CellMode::leesEdwards)
+        {
+            const double g = std::abs(r.settings.simulation.shearRate);
+            out << " = strain " << g*c.fitStart << " - " << g*c.fitEnd;
+        }
+        out << ")\n";
     }
     for (std::size_t k = 0; k < r.kineticSieving.size(); ++k)
     {

@@ -1,5 +1,6 @@
 #include "Measurements.hpp"
 
+#include "correlation/DiffusiveRegime.hpp"
 #include "correlation/GreenKubo.hpp"
 #include "correlation/Statistics.hpp"
 
@@ -203,10 +204,25 @@ void VelocityAutocorrelation::finish(CellRunResult& result, long) const
     for (std::size_t s = 0; s < correlators_.size(); ++s)
     {
         if (members_[s].empty() || correlators_[s].blocks().size() < 2) continue;
-        result.species[s].greenKubo = correlation::greenKubo
+        // The plateau is searched from the Einstein window's start, past the VACF's
+        // decay: an earlier plateau would stop before a slow tail is integrated
+        // (DiffusiveRegime.hpp); the MSD finish takes the window from the same tau_v.
+        const correlation::GreenKuboResult first = correlation::greenKubo
         (
             correlators_[s].blocks(), plan_.sampleInterval, plan_.diffusionComponent,
             plateauSettings(plan_)
+        );
+        correlation::PlateauSettings pastDecay = plateauSettings(plan_);
+        pastDecay.earliestTime = std::max
+        (
+            pastDecay.earliestTime,
+            correlation::DiffusiveRegimeSettings().windowStartCorrelationTimes
+           *correlation::velocityCorrelationTime(first)
+        );
+        result.species[s].greenKubo = correlation::greenKubo
+        (
+            correlators_[s].blocks(), plan_.sampleInterval, plan_.diffusionComponent,
+            pastDecay
         );
     }
 }
@@ -282,8 +298,9 @@ void MeanSquareDisplacementMeasurement::load(const io::Checkpoint& c, const std:
 
 void MeanSquareDisplacementMeasurement::finish(CellRunResult& result, long) const
 {
-    // Einstein: MSD of y (sheared) or x+y+z (homogeneous), fit over the last 60 % of the
-    // lag range, per block
+    // Einstein: MSD of y (sheared) or x+y+z (homogeneous) per block, fitted from
+    // windowStartCorrelationTimes tau_v (from the VACF's Green-Kubo, finished before
+    // this) to the longest lag, half a block; then the diffusive-regime check
     const int comp = plan_.diffusionComponent;
     const std::size_t nBlocks = std::size_t(plan_.blocks);
     for (std::size_t s = 0; s < frames_.size(); ++s)
@@ -308,12 +325,17 @@ void MeanSquareDisplacementMeasurement::finish(CellRunResult& result, long) cons
             }
             series.push_back(v);
         }
-        const auto einstein = correlation::einsteinDiffusivity
-        (
-            times, series, {0.4*times.back(), times.back(), comp == 1 ? 1 : 3}
-        );
         SpeciesTransport& st = result.species[s];
+        const correlation::EinsteinWindow window = correlation::diffusiveWindow
+        (
+            correlation::velocityCorrelationTime(st.greenKubo), times.back(), comp == 1 ? 1 : 3
+        );
+        const auto einstein = correlation::einsteinDiffusivity(times, series, window);
         st.diffusivityMsd = einstein.diffusivity;
+        st.diffusiveRegime = correlation::checkDiffusiveRegime
+        (
+            times, series, window, einstein.diffusivity, st.greenKubo
+        );
         st.msdTimes = times;
         st.msd = einstein.meanMsd;
     }
@@ -414,6 +436,91 @@ void StressAutocorrelation::finish(CellRunResult& result, long samples) const
             result.stressIntegrals, result.settings.volumeFractions
         );
     }
+}
+
+// ---------------------------------------------------------------- collective motion
+
+CollectiveMotionMeasurement::CollectiveMotionMeasurement(int blocks)
+:
+    blocks_(blocks)
+{}
+
+void CollectiveMotionMeasurement::sample(const Simulation& x, long)
+{
+    const Particles& p = x.particles();
+    const PeriodicBox& box = x.box();
+    const double twoPi = 2*M_PI;
+    const double k[3] = {twoPi/box.lx, twoPi/box.ly, twoPi/box.lz};
+    // j[b][a]: component a of the momentum density's mode along axis b (re, im)
+    double re[3][3] = {}, im[3][3] = {}, equipartition[3] = {};
+    for (std::size_t i = 0; i < p.size(); ++i)
+    {
+        const Eigen::Vector3d c = x.fluctuatingVelocity(int(i));
+        const double position[3] = {p.x[i], p.y[i], p.z[i]};
+        const double m = p.mass[i];
+        for (int b = 0; b < 3; ++b)
+        {
+            const double phase = k[b]*position[b];
+            const double cs = std::cos(phase), sn = std::sin(phase);
+            for (int a = 0; a < 3; ++a)
+            {
+                re[b][a] += m*c[a]*cs;
+                im[b][a] -= m*c[a]*sn;
+            }
+        }
+        for (int a = 0; a < 3; ++a) equipartition[a] += m*m*c[a]*c[a];
+    }
+    double modes[2] = {}, expected[2] = {};   // transverse, longitudinal
+    for (int b = 0; b < 3; ++b)
+    {
+        for (int a = 0; a < 3; ++a)
+        {
+            const int part = a == b ? 1 : 0;
+            modes[part] += re[b][a]*re[b][a] + im[b][a]*im[b][a];
+            expected[part] += equipartition[a];
+        }
+    }
+    sums_[0].push_back(modes[0]);
+    sums_[1].push_back(expected[0]);
+    sums_[2].push_back(modes[1]);
+    sums_[3].push_back(expected[1]);
+}
+
+void CollectiveMotionMeasurement::save(io::Checkpoint& c) const
+{
+    for (int k = 0; k < 4; ++k) c.vectors["cellRun_collectiveMotion" + std::to_string(k)] = sums_[k];
+}
+
+void CollectiveMotionMeasurement::load(const io::Checkpoint& c, const std::string& f)
+{
+    for (int k = 0; k < 4; ++k)
+    {
+        sums_[k] = entry(c.vectors, "cellRun_collectiveMotion" + std::to_string(k), f);
+    }
+}
+
+void CollectiveMotionMeasurement::finish(CellRunResult& result, long) const
+{
+    const std::size_t n = sums_[0].size();
+    if (n < std::size_t(blocks_) || blocks_ < 2) return;
+    const auto ratios = [&](int modes)
+    {
+        return correlation::forEachBlock
+        (
+            n, std::size_t(blocks_), [&](std::size_t begin, std::size_t end)
+            {
+                double num = 0, den = 0;
+                for (std::size_t i = begin; i < end; ++i)
+                {
+                    num += sums_[modes][i];
+                    den += sums_[modes + 1][i];
+                }
+                return den > 0 ? num/den : 0.0;
+            }
+        );
+    };
+    result.collectiveMotionTransverse = correlation::meanAndStandardError(ratios(0));
+    result.collectiveMotionLongitudinal = correlation::meanAndStandardError(ratios(2));
 }
 
 // ---------------------------------------------------------------- collisions

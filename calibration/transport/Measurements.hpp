@@ -106,6 +106,30 @@ private:
     std::vector<double> stressSum_;    // sum over samples of J_xy^k / V
 };
 
+//- Collective motion: the kinetic energy in the longest-wavelength modes of the momentum
+//  density against equipartition. j_a(k) = sum_i m_i c_ia exp(-i k.r_i) (c the fluctuating
+//  velocity) for the three wavevectors k = 2 pi / L along x, y and z; for velocities
+//  uncorrelated between particles <|j_a(k)|^2> = <sum_i m_i^2 c_ia^2>, so the ratio of the
+//  two is 1 (equipartition) and grows with collective motion (shear modes, vortices: the
+//  transverse components a != k; sound: the longitudinal one). Per sample the four sums
+//  (transverse and longitudinal, modes and equipartition); ratios of the block sums with
+//  their block error.
+class CollectiveMotionMeasurement : public Measurement
+{
+public:
+    explicit CollectiveMotionMeasurement(int blocks);
+    void sample(const Simulation& simulation, long index) override;
+    void save(io::Checkpoint& checkpoint) const override;
+    void load(const io::Checkpoint& checkpoint, const std::string& source) override;
+    void finish(CellRunResult& result, long samples) const override;
+
+private:
+    int blocks_;
+    //- per sample: transverse modes, transverse equipartition, longitudinal modes,
+    //  longitudinal equipartition
+    std::vector<double> sums_[4];
+};
+
 //- Collision counts and impact-energy histograms, counted by the Simulation's force pass
 //  (enabled here: 56 log bins from 1e-4 to 1e3 x the energy scale).
 class CollisionMeasurement : public Measurement

@@ -59,6 +59,10 @@ struct StoredResult
     calibrationCondition cond;
     scalar T = 0;
     scalar D = 0, DError = 0;        // fines
+    //- D failed the diffusive-regime check (stores written before the check
+    //  have none: taken as they are); DError is then raised (readResults)
+    bool DNotConverged = false;
+    std::string DVerdict;
     scalar eta = 0, etaError = 0;    // coarse, m2/s (converted on reading)
     bool hasEta = false;
 
@@ -205,6 +209,29 @@ std::vector<StoredResult> readResults
             r.T = record.T;
             r.D = record.fine.D;
             r.DError = *record.fine.DError;
+            if (record.fine.DConverged && !*record.fine.DConverged)
+            {
+                // Weighted down, not dropped: the disagreements that failed
+                // the check (Green-Kubo - MSD, the MSD slope's change over its
+                // window) are added to the error in quadrature, so a
+                // condition whose lags were too short counts as what it is,
+                // an estimate with a systematic error of that size
+                // (docs/user/calibration.md)
+                const scalar gkMinusMsd =
+                    record.fine.DMsd ? r.D - *record.fine.DMsd : 0;
+                r.DNotConverged = true;
+                r.DVerdict = record.fine.DVerdict;
+                r.DError = std::sqrt
+                (
+                    sqr(r.DError) + sqr(gkMinusMsd)
+                  + sqr(record.fine.DSlopeChange)
+                );
+                Info<< "    condition " << c.name.c_str()
+                    << ": D of the fines not in the diffusive regime ("
+                    << r.DVerdict.c_str() << "); its error in the fit raised from "
+                    << *record.fine.DError << " to " << r.DError << " m2/s"
+                    << nl;
+            }
             if (record.coarse.eta && !record.coarse.etaError)
             {
                 throw std::runtime_error

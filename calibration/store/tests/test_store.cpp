@@ -78,6 +78,15 @@ TEST(store, writesAndReadsBackACondition)
     EXPECT_EQ(*c.coarse.eta, r.kineticSieving[1].value);
     EXPECT_EQ(*c.coarse.etaError, r.kineticSieving[1].standardError);
     EXPECT_EQ(contents.conditions[0].fine.D, 2*r.species[0].greenKubo.integral.value);
+    // the diffusive-regime check read back: the fines converged, the coarse not
+    EXPECT_EQ(*c.fine.DMsd, r.species[0].diffusivityMsd.value);
+    ASSERT_TRUE(c.fine.DConverged);
+    EXPECT_TRUE(*c.fine.DConverged);
+    EXPECT_EQ(c.fine.DVerdict, "diffusive");
+    ASSERT_TRUE(c.coarse.DConverged);
+    EXPECT_FALSE(*c.coarse.DConverged);
+    EXPECT_EQ(c.coarse.DSlopeChange, 3e-7);
+    EXPECT_NE(c.coarse.DVerdict.find("MSD slope not flat"), std::string::npos) << c.coarse.DVerdict;
 
     const auto keys = storedSettingsKeys(h5);
     ASSERT_EQ(keys.size(), 2u);

@@ -218,6 +218,14 @@ Foam::label Foam::calibrationDEMRunner::runCondition
             << settings.fine().name << " = "
             << fmt(r.species[0].greenKubo.integral.value).c_str()
             << " m2/s)" << endl;
+        if (!r.species[0].diffusiveRegime.converged())
+        {
+            Info<< "    runDEM: " << name.c_str() << ": D_"
+                << settings.fine().name << " not in the diffusive regime: "
+                << r.species[0].diffusiveRegime.verdict().c_str()
+                << " (stored as not converged; longer samplingTime or fewer"
+                << " blocks lengthen the lags)" << endl;
+        }
     }
     return ran;
 }

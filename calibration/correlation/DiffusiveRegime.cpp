@@ -1,0 +1,173 @@
+#include "correlation/DiffusiveRegime.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <stdexcept>
+
+namespace sdf::correlation
+{
+
+double velocityCorrelationTime(const GreenKuboResult& greenKubo)
+{
+    if (greenKubo.meanCorrelation.empty() || !(greenKubo.meanCorrelation.front() > 0))
+    {
+        return 0;
+    }
+    const double peak = *std::max_element
+    (
+        greenKubo.meanRunningIntegral.begin(), greenKubo.meanRunningIntegral.end()
+    );
+    return std::max(0.0, peak)/greenKubo.meanCorrelation.front();
+}
+
+
+EinsteinWindow diffusiveWindow
+(
+    double correlationTime,
+    double longestLag,
+    int dimensions,
+    const DiffusiveRegimeSettings& settings
+)
+{
+    const double start = settings.windowStartCorrelationTimes*correlationTime;
+    const double latestStart = longestLag/settings.minimumWindowRatio;
+    return {std::min(start, latestStart), longestLag, dimensions};
+}
+
+
+namespace
+{
+
+//- D fitted over [start, end] of every block's MSD.
+std::vector<double> blockSlopes
+(
+    const std::vector<double>& times,
+    const std::vector<std::vector<double>>& blockMsd,
+    double start,
+    double end,
+    int dimensions
+)
+{
+    std::vector<double> slopes;
+    for (const std::vector<double>& msd : blockMsd)
+    {
+        slopes.push_back(fitEinsteinSlope(times, msd, {start, end, dimensions}).diffusivity);
+    }
+    return slopes;
+}
+
+std::string percent(const Estimate& change, double reference)
+{
+    char buf[64];
+    std::snprintf
+    (
+        buf, sizeof buf, "%+.1f +- %.1f %%",
+        100*change.value/reference, 100*change.standardError/std::abs(reference)
+    );
+    return buf;
+}
+
+} // namespace
+
+
+DiffusiveRegimeCheck checkDiffusiveRegime
+(
+    const std::vector<double>& times,
+    const std::vector<std::vector<double>>& blockMsd,
+    const EinsteinWindow& window,
+    const Estimate& msd,
+    const GreenKuboResult& greenKubo,
+    const DiffusiveRegimeSettings& settings
+)
+{
+    if (blockMsd.size() < 2)
+    {
+        throw std::invalid_argument("checkDiffusiveRegime: needs >= 2 blocks or replicas");
+    }
+    DiffusiveRegimeCheck check;
+    check.correlationTime = velocityCorrelationTime(greenKubo);
+    check.fitStart = window.fitStart;
+    check.fitEnd = window.fitEnd;
+    check.plateauFound = greenKubo.plateauFound;
+    check.msd = msd;
+
+    const double middle = 0.5*(window.fitStart + window.fitEnd);
+    const auto inRange = [&](double a, double b)
+    {
+        return std::size_t(std::count_if
+        (
+            times.begin(), times.end(), [&](double t) { return t >= a && t <= b; }
+        ));
+    };
+    const bool longEnough =
+        window.fitEnd >= settings.minimumWindowRatio*window.fitStart*(1 - 1e-12)
+     && inRange(window.fitStart, middle) >= settings.minimumPointsPerHalf
+     && inRange(middle, window.fitEnd) >= settings.minimumPointsPerHalf;
+    check.windowPastDecay =
+        longEnough
+     && check.correlationTime > 0
+     && window.fitStart
+     >= settings.windowStartCorrelationTimes*check.correlationTime*(1 - 1e-12);
+
+    if (longEnough)
+    {
+        const std::vector<double> early =
+            blockSlopes(times, blockMsd, window.fitStart, middle, window.dimensions);
+        const std::vector<double> late =
+            blockSlopes(times, blockMsd, middle, window.fitEnd, window.dimensions);
+        std::vector<double> change(early.size());
+        for (std::size_t b = 0; b < early.size(); ++b) change[b] = late[b] - early[b];
+        check.earlySlope = meanAndStandardError(early);
+        check.lateSlope = meanAndStandardError(late);
+        check.slopeChange = meanAndStandardError(change);
+        check.slopeFlat =
+            std::abs(check.slopeChange.value)
+         <= settings.agreementSigmas*check.slopeChange.standardError
+          + settings.slopeTolerance*std::abs(msd.value);
+    }
+
+    const Estimate& gk = greenKubo.integral;
+    check.greenKuboMinusMsd.value = gk.value - msd.value;
+    check.greenKuboMinusMsd.standardError = std::hypot(gk.standardError, msd.standardError);
+    check.greenKuboMinusMsd.samples = std::min(gk.samples, msd.samples);
+    check.greenKuboAgrees =
+        std::abs(check.greenKuboMinusMsd.value)
+     <= settings.agreementSigmas*check.greenKuboMinusMsd.standardError;
+    return check;
+}
+
+
+std::string DiffusiveRegimeCheck::verdict() const
+{
+    if (converged()) return "diffusive";
+    std::string v;
+    const auto add = [&v](const std::string& s) { v += (v.empty() ? "" : "; ") + s; };
+    const double reference = msd.value != 0 ? msd.value : 1.0;
+    if (!windowPastDecay) add("MSD window before the VACF's decay (blocks too short)");
+    if (!slopeFlat)
+    {
+        add
+        (
+            "MSD slope not flat ("
+          + (slopeChange.samples ? percent(slopeChange, reference) : std::string("window too short"))
+          + ")"
+        );
+    }
+    if (!greenKuboAgrees)
+    {
+        add("Green-Kubo - MSD = " + percent(greenKuboMinusMsd, reference));
+    }
+    if (!plateauFound) add("no Green-Kubo plateau");
+    return v;
+}
+
+std::string DiffusiveRegimeCheck::figures() const
+{
+    const double reference = msd.value != 0 ? msd.value : 1.0;
+    return "MSD slope change "
+      + (slopeChange.samples ? percent(slopeChange, reference) : std::string("not measured"))
+      + ", Green-Kubo - MSD " + percent(greenKuboMinusMsd, reference);
+}
+
+} // namespace sdf::correlation
