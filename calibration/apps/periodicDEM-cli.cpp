@@ -51,7 +51,7 @@ const std::set<std::string> validKeys =
     "timeStep", "threads", "seed", "equilibrationTime", "samplingTime", "sampleEvery",
     "blocks", "progressEvery", "output", "label", "thermostatTime", "maxOverlapFraction",
     "lammpsData", "throughputOnly", "threadScalingRounds", "skin", "maxEquilibrationTime",
-    "checkpointFile", "checkpointEvery", "resume"
+    "checkpointFile", "checkpointEvery", "resume", "pairs"
 };
 
 void addPair(std::map<std::string, std::string>& config, const std::string& line, const std::string& where)
@@ -92,6 +92,63 @@ std::string text(const std::map<std::string, std::string>& c, const std::string&
 {
     const auto it = c.find(key);
     return it == c.end() ? fallback : it->second;
+}
+
+//- "pairs = fine/coarse:restitution=0.7:friction=0.4 coarse/coarse:normalStiffness=3000"
+std::vector<PairContactSettings> pairsFrom(const std::string& text)
+{
+    std::vector<PairContactSettings> pairs;
+    std::istringstream in(text);
+    std::string token;
+    const std::string form =
+        "expected first/second:key=value[:key=value ...] with keys restitution, friction,"
+        " normalStiffness";
+    while (in >> token)
+    {
+        std::istringstream parts(token);
+        std::string names, item;
+        std::getline(parts, names, ':');
+        PairContactSettings p;
+        const auto slash = names.find('/');
+        if (slash == std::string::npos || slash == 0 || slash + 1 == names.size())
+        {
+            throw std::invalid_argument("entry 'pairs': '" + token + "': " + form);
+        }
+        p.first = names.substr(0, slash);
+        p.second = names.substr(slash + 1);
+        bool any = false;
+        while (std::getline(parts, item, ':'))
+        {
+            const auto eq = item.find('=');
+            const std::string key = item.substr(0, eq);
+            double value = 0;
+            try
+            {
+                std::size_t used = 0;
+                value = std::stod(item.substr(eq == std::string::npos ? item.size() : eq + 1), &used);
+                if (eq == std::string::npos || used != item.size() - eq - 1) throw std::invalid_argument("");
+            }
+            catch (const std::exception&)
+            {
+                throw std::invalid_argument("entry 'pairs': '" + item + "' in '" + token + "': " + form);
+            }
+            if (key == "restitution") p.restitution = value;
+            else if (key == "friction") p.friction = value;
+            else if (key == "normalStiffness") p.normalStiffness = value;
+            else
+            {
+                throw std::invalid_argument
+                (
+                    "entry 'pairs': unknown key '" + key + "' in '" + token + "'; valid:"
+                    " restitution friction normalStiffness"
+                );
+            }
+            any = true;
+        }
+        if (!any) throw std::invalid_argument("entry 'pairs': '" + token + "' sets nothing; " + form);
+        pairs.push_back(p);
+    }
+    return pairs;
 }
 
 CellRunSettings settingsFrom(const std::map<std::string, std::string>& c)
@@ -136,6 +193,7 @@ CellRunSettings settingsFrom(const std::map<std::string, std::string>& c)
     sim.contact.tangentialDampingRatio = number(c, "tangentialDampingRatio", 0.5);
     sim.contact.youngsModulus = number(c, "youngsModulus", 1e7);
     sim.contact.poissonRatio = number(c, "poissonRatio", 0.3);
+    if (c.count("pairs")) sim.contact.pairs = pairsFrom(c.at("pairs"));
     sim.timeStep = number(c, "timeStep", 0.0);
     sim.threads = int(number(c, "threads", 0));
     s.seed = std::uint64_t(number(c, "seed", 1));

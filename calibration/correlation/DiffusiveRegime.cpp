@@ -127,6 +127,33 @@ DiffusiveRegimeCheck checkDiffusiveRegime
           + settings.slopeTolerance*std::abs(msd.value);
     }
 
+    // stationarity: D over the window, later half of the blocks against the earlier
+    {
+        const std::vector<double> perBlock = blockSlopes
+        (
+            times, blockMsd, window.fitStart, window.fitEnd, window.dimensions
+        );
+        const std::size_t half = perBlock.size()/2;
+        if (half >= 2)
+        {
+            const Estimate earlier = meanAndStandardError
+            (
+                std::vector<double>(perBlock.begin(), perBlock.begin() + half)
+            );
+            const Estimate later = meanAndStandardError
+            (
+                std::vector<double>(perBlock.end() - half, perBlock.end())
+            );
+            check.drift.value = later.value - earlier.value;
+            check.drift.standardError = std::hypot(later.standardError, earlier.standardError);
+            check.drift.samples = perBlock.size();
+            check.stationary =
+                std::abs(check.drift.value)
+             <= settings.agreementSigmas*check.drift.standardError
+              + settings.slopeTolerance*std::abs(msd.value);
+        }
+    }
+
     const Estimate& gk = greenKubo.integral;
     check.greenKuboMinusMsd.value = gk.value - msd.value;
     check.greenKuboMinusMsd.standardError = std::hypot(gk.standardError, msd.standardError);
@@ -159,6 +186,15 @@ std::string DiffusiveRegimeCheck::verdict() const
         add("Green-Kubo - MSD = " + percent(greenKuboMinusMsd, reference));
     }
     if (!plateauFound) add("no Green-Kubo plateau");
+    if (!stationary)
+    {
+        add
+        (
+            "D drifts over the run ("
+          + (drift.samples ? percent(drift, reference) : std::string("fewer than 4 blocks"))
+          + ")"
+        );
+    }
     return v;
 }
 
@@ -167,7 +203,9 @@ std::string DiffusiveRegimeCheck::figures() const
     const double reference = msd.value != 0 ? msd.value : 1.0;
     return "MSD slope change "
       + (slopeChange.samples ? percent(slopeChange, reference) : std::string("not measured"))
-      + ", Green-Kubo - MSD " + percent(greenKuboMinusMsd, reference);
+      + ", Green-Kubo - MSD " + percent(greenKuboMinusMsd, reference)
+      + ", drift over the run "
+      + (drift.samples ? percent(drift, reference) : std::string("not measured"));
 }
 
 } // namespace sdf::correlation

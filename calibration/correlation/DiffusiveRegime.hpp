@@ -15,7 +15,11 @@
 //   3. Green-Kubo equals the MSD: |D_GK - D_MSD| <= agreementSigmas * the errors
 //      combined in quadrature (the two come from the same trajectory, so this
 //      overstates the error of the difference: a lenient test);
-//   4. the Green-Kubo running integral reached its plateau (GreenKubo.hpp).
+//   4. the Green-Kubo running integral reached its plateau (GreenKubo.hpp);
+//   5. the cell is stationary: D over the window from the later half of the blocks
+//      minus D from the earlier half is zero within agreementSigmas combined errors
+//      plus slopeTolerance D (a cell that ages, e.g. one that slowly orders or
+//      crystallises near phi 0.5, shows a D that falls with the run's length).
 //
 // Since I(t) is exactly half the MSD's local slope per component, 1-3 ask one
 // question three ways: has the velocity forgotten its past within the lags measured?
@@ -69,21 +73,24 @@ struct DiffusiveRegimeCheck
     Estimate slopeChange;         // late - early, per block
     Estimate msd;                 // D_MSD over the whole window
     Estimate greenKuboMinusMsd;   // D_GK - D_MSD, errors in quadrature
+    Estimate drift;               // D of the later blocks - D of the earlier blocks
     bool windowPastDecay = false;
     bool slopeFlat = false;
     bool greenKuboAgrees = false;
     bool plateauFound = false;
+    bool stationary = false;
 
     bool converged() const
     {
-        return windowPastDecay && slopeFlat && greenKuboAgrees && plateauFound;
+        return windowPastDecay && slopeFlat && greenKuboAgrees && plateauFound && stationary;
     }
 
     //- "diffusive", or the failed items, e.g. "window before the VACF's decay;
     //  MSD slope not flat (+12 +- 3 %)".
     std::string verdict() const;
 
-    //- "MSD slope change +5.0 +- 1.2 %, Green-Kubo - MSD +4.4 +- 2.7 %" (of D_MSD).
+    //- "MSD slope change +5.0 +- 1.2 %, Green-Kubo - MSD +4.4 +- 2.7 %, drift over the
+    //  run -1.0 +- 2.0 %" (of D_MSD).
     std::string figures() const;
 };
 

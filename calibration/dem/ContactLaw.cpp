@@ -2,6 +2,7 @@
 #include "ContactModels.hpp"
 
 #include <algorithm>
+#include <cstdio>
 #include <limits>
 #include <stdexcept>
 
@@ -29,25 +30,83 @@ std::string contactModelName(ContactModel model)
     return model == ContactModel::linearSpringDashpot ? "linearSpringDashpot" : "hertzMindlin";
 }
 
-void validateContactSettings(const ContactSettings& s)
+std::string pairContactText(const PairContactSettings& p)
 {
-    if (!(s.restitution > 0.0 && s.restitution <= 1.0))
+    std::string text = p.first + "/" + p.second + ":";
+    const auto add = [&text](const char* key, const std::optional<double>& v)
+    {
+        if (!v) return;
+        char buf[64];
+        std::snprintf(buf, sizeof buf, " %s %.10g", key, *v);
+        text += (text.back() == ':' ? "" : ",") + std::string(buf);
+    };
+    add("e", p.restitution);
+    add("mu", p.friction);
+    add("kn", p.normalStiffness);
+    return text;
+}
+
+namespace
+{
+
+//- The checks of one contact's constants; `where` prefixes the message (a pair's entry).
+void validateConstants
+(
+    const std::string& where,
+    double restitution,
+    double friction,
+    const std::optional<double>& normalStiffness
+)
+{
+    if (!(restitution > 0.0 && restitution <= 1.0))
     {
         throw std::invalid_argument
         (
-            "restitution e = " + std::to_string(s.restitution) + " outside (0, 1]"
+            where + "restitution e = " + std::to_string(restitution) + " outside (0, 1]"
         );
     }
-    if (!(s.friction >= 0.0) || !std::isfinite(s.friction))
+    if (!(friction >= 0.0) || !std::isfinite(friction))
     {
-        throw std::invalid_argument("friction must be >= 0 (got " + std::to_string(s.friction) + ")");
+        throw std::invalid_argument
+        (
+            where + "friction must be >= 0 (got " + std::to_string(friction) + ")"
+        );
     }
-    if (s.model == ContactModel::linearSpringDashpot)
+    if (normalStiffness && (!(*normalStiffness > 0) || !std::isfinite(*normalStiffness)))
     {
-        if (!(s.normalStiffness > 0) || !std::isfinite(s.normalStiffness))
+        throw std::invalid_argument(where + "normalStiffness must be positive");
+    }
+}
+
+} // namespace
+
+void validateContactSettings(const ContactSettings& s)
+{
+    for (const PairContactSettings& p : s.pairs)
+    {
+        const std::string where = "pair " + p.first + "/" + p.second + ": ";
+        validateConstants
+        (
+            where, p.restitution.value_or(s.restitution), p.friction.value_or(s.friction),
+            p.normalStiffness
+        );
+        if (p.normalStiffness && s.model != ContactModel::linearSpringDashpot)
         {
-            throw std::invalid_argument("normalStiffness must be positive");
+            throw std::invalid_argument
+            (
+                where + "normalStiffness applies to the linearSpringDashpot law only"
+                " (hertzMindlin: youngsModulus and poissonRatio, one material)"
+            );
         }
+    }
+    const bool linear = s.model == ContactModel::linearSpringDashpot;
+    validateConstants
+    (
+        "", s.restitution, s.friction,
+        linear ? std::optional<double>(s.normalStiffness) : std::nullopt
+    );
+    if (linear)
+    {
         if (!(s.tangentialStiffnessRatio > 0))
         {
             throw std::invalid_argument("tangentialStiffnessRatio must be positive");
@@ -141,9 +200,33 @@ ContactLaw::ContactLaw(const ContactSettings& settings, const std::vector<Specie
 {
     validateContactSettings(settings_);
     validateSpecies(species_);
-    if (settings_.model == ContactModel::hertzMindlin)
+    // every pair entry names two species of the cell, and each pair once
+    const auto index = [&](const std::string& name, const PairContactSettings& p)
     {
-        hertzAlpha_ = hertzDampingFactor(settings_.restitution);
+        for (int a = 0; a < nSpecies_; ++a)
+        {
+            if (species_[a].name == name) return a;
+        }
+        std::string valid;
+        for (const Species& sp : species_) valid += " " + sp.name;
+        throw std::invalid_argument
+        (
+            "pair " + p.first + "/" + p.second + ": unknown species '" + name
+          + "'; valid:" + valid
+        );
+    };
+    std::vector<int> seen(nSpecies_*nSpecies_, 0);
+    for (const PairContactSettings& p : settings_.pairs)
+    {
+        const int a = index(p.first, p), b = index(p.second, p);
+        if (seen[a*nSpecies_ + b]++)
+        {
+            throw std::invalid_argument
+            (
+                "pair " + p.first + "/" + p.second + " given more than once"
+            );
+        }
+        if (a != b) seen[b*nSpecies_ + a]++;
     }
     pairs_.resize(nSpecies_*nSpecies_);
     walls_.resize(nSpecies_);
@@ -154,27 +237,48 @@ ContactLaw::ContactLaw(const ContactSettings& settings, const std::vector<Specie
             pairs_[a*nSpecies_ + b] = makeCoefficients
             (
                 species_[a].mass(), species_[a].radius(),
-                species_[b].mass(), species_[b].radius(), false
+                species_[b].mass(), species_[b].radius(), false, constantsOf(a, b)
             );
         }
-        walls_[a] = makeCoefficients(species_[a].mass(), species_[a].radius(), 0, 0, true);
+        walls_[a] = makeCoefficients
+        (
+            species_[a].mass(), species_[a].radius(), 0, 0, true,
+            {settings_.restitution, settings_.friction, settings_.normalStiffness}
+        );
     }
+}
+
+ContactLaw::PairConstants ContactLaw::constantsOf(int a, int b) const
+{
+    PairConstants k{settings_.restitution, settings_.friction, settings_.normalStiffness};
+    for (const PairContactSettings& p : settings_.pairs)
+    {
+        const bool match =
+            (p.first == species_[a].name && p.second == species_[b].name)
+         || (p.first == species_[b].name && p.second == species_[a].name);
+        if (!match) continue;
+        k.restitution = p.restitution.value_or(k.restitution);
+        k.friction = p.friction.value_or(k.friction);
+        k.normalStiffness = p.normalStiffness.value_or(k.normalStiffness);
+    }
+    return k;
 }
 
 PairCoefficients ContactLaw::makeCoefficients
 (
-    double mi, double ri, double mj, double rj, bool wall
+    double mi, double ri, double mj, double rj, bool wall, const PairConstants& constants
 ) const
 {
     PairCoefficients c;
     c.effectiveMass = wall ? mi : mi*mj/(mi + mj);
     c.effectiveRadius = wall ? ri : ri*rj/(ri + rj);
-    c.friction = settings_.friction;
-    const double e = settings_.restitution;
+    c.friction = constants.friction;
+    c.restitution = constants.restitution;
+    const double e = constants.restitution;
     const double lnE = std::log(e);
     if (settings_.model == ContactModel::linearSpringDashpot)
     {
-        c.kn = settings_.normalStiffness;
+        c.kn = constants.normalStiffness;
         c.kt = settings_.tangentialStiffnessRatio*c.kn;
         // exact restitution of the damped oscillator m x'' + gamma x' + k x = 0
         c.gammaN = -2.0*lnE*std::sqrt(c.effectiveMass*c.kn)/std::sqrt(M_PI*M_PI + lnE*lnE);
@@ -191,10 +295,11 @@ PairCoefficients ContactLaw::makeCoefficients
         c.hertzK = 4.0/3.0*eStar*sqrtR;
         c.mindlinK = 8.0*gStar*sqrtR;
         // Tsuji: gamma_n = alpha sqrt(m* K) delta^{1/4}
-        c.hertzDamp = hertzAlpha_*std::sqrt(c.effectiveMass*c.hertzK);
+        const double alpha = hertzDampingFactor(e);
+        c.hertzDamp = alpha*std::sqrt(c.effectiveMass*c.hertzK);
         // same form for the tangential dashpot, with the Mindlin stiffness
         // S_t = mindlinK sqrt(delta) in place of dF_n/d delta = 1.5 K sqrt(delta)
-        c.mindlinDamp = hertzAlpha_*std::sqrt(c.effectiveMass*c.mindlinK/1.5);
+        c.mindlinDamp = alpha*std::sqrt(c.effectiveMass*c.mindlinK/1.5);
     }
     return c;
 }
@@ -202,13 +307,12 @@ PairCoefficients ContactLaw::makeCoefficients
 double ContactLaw::contactDuration(double vImpact) const
 {
     double shortest = std::numeric_limits<double>::max();
-    const double e = settings_.restitution;
-    const double lnE = std::log(e);
     for (const PairCoefficients& c : pairs_)
     {
         double tc;
         if (settings_.model == ContactModel::linearSpringDashpot)
         {
+            const double lnE = std::log(c.restitution);
             const double omega0 = std::sqrt(c.kn/c.effectiveMass);
             tc = std::sqrt(M_PI*M_PI + lnE*lnE)/omega0;
         }

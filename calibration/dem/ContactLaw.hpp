@@ -17,6 +17,7 @@
 #include "Species.hpp"
 
 #include <cmath>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -27,6 +28,20 @@ enum class ContactModel { linearSpringDashpot, hertzMindlin };
 
 ContactModel contactModelFromName(const std::string& name);
 std::string contactModelName(ContactModel model);
+
+//- The constants of one species pair that differ from the single values of
+//  ContactSettings, as DEM users set them per material pair (LAMMPS pair_coeff per type
+//  pair; the interaction tables of commercial DEM). An unset value takes the single one.
+struct PairContactSettings
+{
+    std::string first, second;              // species names, in either order
+    std::optional<double> restitution;      // e of the pair
+    std::optional<double> friction;         // mu of the pair
+    std::optional<double> normalStiffness;  // k_n [N/m] (linear law only)
+};
+
+//- "fine/coarse: e 0.7, mu 0.4, kn 3000" (the values set), for reports and keys.
+std::string pairContactText(const PairContactSettings& pair);
 
 struct ContactSettings
 {
@@ -42,6 +57,9 @@ struct ContactSettings
     // Hertz-Mindlin (same material for all species and walls)
     double youngsModulus = 1.0e7;                  // E [Pa]
     double poissonRatio = 0.3;                     // nu
+
+    //- Per species pair (walls keep the single values); at most one entry per pair.
+    std::vector<PairContactSettings> pairs;
 };
 
 //- Throws std::invalid_argument naming the offending entry.
@@ -65,6 +83,7 @@ struct PairCoefficients
     //   gamma_n = hertzDamp delta^{1/4},  gamma_t = mindlinDamp delta^{1/4}
     double hertzK = 0.0, mindlinK = 0.0, hertzDamp = 0.0, mindlinDamp = 0.0;
     double friction = 0.0;
+    double restitution = 1.0;          // the e the dashpots were made for
 };
 
 //- Coefficient tables for all species pairs and species-wall contacts.
@@ -97,14 +116,23 @@ public:
     double tangentialStiffness(const PairCoefficients& c, double delta) const;
 
 private:
-    PairCoefficients makeCoefficients(double mi, double ri, double mj, double rj, bool wall) const;
+    //- The constants of one contact: the single ones, or a pair's values where set.
+    struct PairConstants
+    {
+        double restitution, friction, normalStiffness;
+    };
+    PairConstants constantsOf(int a, int b) const;
+
+    PairCoefficients makeCoefficients
+    (
+        double mi, double ri, double mj, double rj, bool wall, const PairConstants& constants
+    ) const;
 
     ContactSettings settings_;
     int nSpecies_;
     std::vector<Species> species_;
     std::vector<PairCoefficients> pairs_;
     std::vector<PairCoefficients> walls_;
-    double hertzAlpha_ = 0.0;
 };
 
 } // namespace sdf::dem

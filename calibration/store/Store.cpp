@@ -55,6 +55,7 @@ SpeciesRecord readSpecies(const io::Group& g)
         s.DConverged = r.readInt64("converged") != 0;
         s.DVerdict = r.readString("verdict");
         s.DSlopeChange = r.readDouble("slopeChange");
+        if (r.hasAttribute("drift")) s.DDrift = r.readDouble("drift");
     }
     s.eta = optionalDouble(g, "eta");
     s.etaError = optionalDouble(g, "etaError");
@@ -282,6 +283,11 @@ std::string settingsKey(const dem::CellRunSettings& b, const std::string& contac
         << "; maxEquilibrationTime " << fmt10(b.maxEquilibrationTime)
         << "; samplingTime " << fmt10(b.samplingTime)
         << "; sampleEvery " << b.sampleEvery << "; blocks " << b.blocks;
+    // per-pair contact constants: named only when set, so the keys of older stores stand
+    for (const dem::PairContactSettings& p : c.pairs)
+    {
+        key << "; pair " << dem::pairContactText(p);
+    }
     // the driving: named only when it is not the velocity-rescaling thermostat, so the
     // keys of stores written before the choice existed stay valid
     if (sim.mode != dem::CellMode::thermostatted)

@@ -151,10 +151,12 @@ struct SpeciesRecord
     std::optional<double> DError;
     std::optional<double> DMsd;
     //- The diffusive-regime check (absent in older stores): converged, its verdict,
-    //  and the change of the MSD's slope over the window (late - early half).
+    //  the change of the MSD's slope over the window (late - early half) and the drift
+    //  of D over the run (later blocks - earlier blocks).
     std::optional<bool> DConverged;
     std::string DVerdict;
     double DSlopeChange = 0;
+    double DDrift = 0;
     std::optional<double> eta;        // engine units (kg^2 m s^-3)
     std::optional<double> etaError;
 };

@@ -87,6 +87,7 @@ struct SpeciesTransport
     std::string name;
     int count = 0;
     double temperature = 0;                       // <|c|^2> over the sampling
+    double temperatureError = 0;                  // its block standard error
     correlation::GreenKuboResult greenKubo;       // D from the VACF (per component)
     correlation::Estimate diffusivityMsd;         // Einstein slope, block error
     std::vector<double> msdTimes, msd;            // mean MSD (per component)

@@ -42,10 +42,12 @@ void writeDiffusiveRegime(const io::Group& g, const correlation::DiffusiveRegime
     estimate("lateSlope", c.lateSlope);
     estimate("slopeChange", c.slopeChange);
     estimate("greenKuboMinusMsd", c.greenKuboMinusMsd);
+    estimate("drift", c.drift);
     g.setAttribute("windowPastDecay", std::int64_t(c.windowPastDecay ? 1 : 0));
     g.setAttribute("slopeFlat", std::int64_t(c.slopeFlat ? 1 : 0));
     g.setAttribute("greenKuboAgrees", std::int64_t(c.greenKuboAgrees ? 1 : 0));
     g.setAttribute("plateauFound", std::int64_t(c.plateauFound ? 1 : 0));
+    g.setAttribute("stationary", std::int64_t(c.stationary ? 1 : 0));
 }
 
 
@@ -59,6 +61,14 @@ void writeInputs(const io::Group& inputs, const CellRunResult& r)
     inputs.setAttribute("mode", cellModeName(s.simulation.mode));
     inputs.setAttribute("contactModel", contactModelName(s.simulation.contact.model));
     inputs.setAttribute("restitution", s.simulation.contact.restitution);
+    {
+        std::string pairs;
+        for (const PairContactSettings& p : s.simulation.contact.pairs)
+        {
+            pairs += (pairs.empty() ? "" : "; ") + pairContactText(p);
+        }
+        inputs.setAttribute("pairContacts", pairs);
+    }
     inputs.setAttribute("friction", s.simulation.contact.friction);
     inputs.setAttribute("normalStiffness", s.simulation.contact.normalStiffness);
     inputs.setAttribute("youngsModulus", s.simulation.contact.youngsModulus);
@@ -124,6 +134,7 @@ void writeSpeciesResults(const io::Group& res, const CellRunResult& r)
         const io::Group g = sp.createGroup(st.name);
         g.setAttribute("count", std::int64_t(st.count));
         g.setAttribute("temperature", st.temperature);
+        g.setAttribute("temperatureError", st.temperatureError);
         g.setAttribute("diffusivityMsd", st.diffusivityMsd.value);
         g.setAttribute("diffusivityMsdError", st.diffusivityMsd.standardError);
         writeGreenKubo(g.createGroup("greenKubo"), st.greenKubo);

@@ -50,6 +50,10 @@ std::string summary(const CellRunResult& r)
         << r.timeStep << " s, " << contactModelName(s.simulation.contact.model)
         << ", e = " << s.simulation.contact.restitution << ", mu = "
         << s.simulation.contact.friction << "\n";
+    for (const PairContactSettings& p : s.simulation.contact.pairs)
+    {
+        out << "  pair " << pairContactText(p) << "\n";
+    }
     out << "  equilibrated: " << (r.equilibrated ? "yes" : "NO") << " after "
         << r.equilibrationTime << " s\n";
     out << "  T = " << r.temperature << " +- " << r.temperatureError
@@ -94,7 +98,7 @@ std::string summary(const CellRunResult& r)
     for (const SpeciesTransport& st : r.species)
     {
         out << "  " << st.name << " (" << st.count << "): T = " << st.temperature
-            << ", D_GK = " << st.greenKubo.integral.value << " +- "
+            << " +- " << st.temperatureError << ", D_GK = " << st.greenKubo.integral.value << " +- "
             << st.greenKubo.integral.standardError << " m2/s"
             << (st.greenKubo.plateauFound ? "" : " (no plateau)")
             << ", D_MSD = " << st.diffusivityMsd.value << " +- "

@@ -142,6 +142,11 @@ void TemperatureMeasurement::finish(CellRunResult& result, long) const
         double sumT = 0;
         for (double v : species_[s]) sumT += v;
         result.species[s].temperature = species_[s].empty() ? 0 : sumT/species_[s].size();
+        if (species_[s].size() >= std::size_t(std::max(2, blocks_)))
+        {
+            result.species[s].temperatureError =
+                correlation::blockAverage(species_[s], blocks_).standardError;
+        }
     }
 }
 

@@ -241,8 +241,15 @@ Foam::label Foam::runConditions
                     << " +- "
                     << fmt(r.species[0].greenKubo.integral.standardError).c_str()
                     << " m2/s"
-                    << (r.species[0].greenKubo.plateauFound ? "" : ", no plateau")
                     << ")" << endl;
+                if (!r.species[0].diffusiveRegime.converged())
+                {
+                    progress
+                        << "    not in the diffusive regime (stored as not"
+                        << " converged, weighted down in the fit): "
+                        << r.species[0].diffusiveRegime.verdict().c_str()
+                        << endl;
+                }
             }
             catch (const std::exception& err)
             {

@@ -213,7 +213,7 @@ std::vector<StoredResult> readResults
             {
                 // Weighted down, not dropped: the disagreements that failed
                 // the check (Green-Kubo - MSD, the MSD slope's change over its
-                // window) are added to the error in quadrature, so a
+                // window, the drift of D over the run) are added to the error in quadrature, so a
                 // condition whose lags were too short counts as what it is,
                 // an estimate with a systematic error of that size
                 // (docs/user/calibration.md)
@@ -224,7 +224,7 @@ std::vector<StoredResult> readResults
                 r.DError = std::sqrt
                 (
                     sqr(r.DError) + sqr(gkMinusMsd)
-                  + sqr(record.fine.DSlopeChange)
+                  + sqr(record.fine.DSlopeChange) + sqr(record.fine.DDrift)
                 );
                 Info<< "    condition " << c.name.c_str()
                     << ": D of the fines not in the diffusive regime ("

@@ -1,7 +1,8 @@
 // The diffusive-regime check on processes whose diffusivity is known exactly:
 // an Ornstein-Uhlenbeck velocity (exponential VACF) measured over long blocks passes;
 // the same over blocks of a few correlation times fails on the window; a velocity with
-// a slow second mode (a VACF tail carrying half of D) fails on the MSD's slope.
+// a slow second mode (a VACF tail carrying half of D) fails on the MSD's slope; one whose
+// variance halves in mid-run fails on the drift.
 #include "correlation/DiffusiveRegime.hpp"
 #include "correlation/FftCorrelator.hpp"
 #include "OrnsteinUhlenbeck.hpp"
@@ -84,6 +85,7 @@ TEST(DiffusiveRegime, LongBlocksOfAnExponentialVacfPass)
     EXPECT_TRUE(check.windowPastDecay);
     EXPECT_TRUE(check.slopeFlat) << check.verdict();
     EXPECT_TRUE(check.greenKuboAgrees) << check.verdict();
+    EXPECT_TRUE(check.stationary) << check.verdict();
     EXPECT_TRUE(check.converged()) << check.verdict();
     EXPECT_EQ(check.verdict(), "diffusive");
     // Both estimates within 3 of their errors of the exact D; the plateau searched
@@ -130,4 +132,31 @@ TEST(DiffusiveRegime, ASlowVacfTailFailsOnTheMsdSlope)
     EXPECT_GT(check.slopeChange.value, 0.0);
     EXPECT_FALSE(check.converged());
     EXPECT_NE(check.verdict().find("MSD slope not flat"), std::string::npos) << check.verdict();
+}
+
+TEST(DiffusiveRegime, ACellThatAgesFailsOnTheDrift)
+{
+    // The velocity variance halves in the middle of the run (as D falls when a dense
+    // cell slowly orders): D of the later blocks is half that of the earlier ones.
+    OuParameters first;
+    OuParameters second;
+    second.variance = 0.5*first.variance;
+    second.seed = 99;
+    first.samples = second.samples = 20000;
+    OuTrajectory run = makeOuTrajectory(first);
+    const OuTrajectory later = makeOuTrajectory(second);
+    const Eigen::MatrixX3d end = run.positions.back() + run.velocities.back()*first.dt;
+    for (std::size_t k = 0; k < later.velocities.size(); ++k)
+    {
+        run.velocities.push_back(later.velocities[k]);
+        run.positions.push_back(end + later.positions[k]);
+    }
+    GreenKuboResult gk;
+    EinsteinResult einstein;
+    const DiffusiveRegimeCheck check = measure(run, first.dt, 400, 10, gk, einstein);
+    EXPECT_TRUE(check.windowPastDecay);
+    EXPECT_FALSE(check.stationary);
+    EXPECT_LT(check.drift.value, -0.3*einstein.diffusivity.value);
+    EXPECT_FALSE(check.converged());
+    EXPECT_NE(check.verdict().find("D drifts over the run"), std::string::npos) << check.verdict();
 }

@@ -86,6 +86,7 @@ TEST(store, writesAndReadsBackACondition)
     ASSERT_TRUE(c.coarse.DConverged);
     EXPECT_FALSE(*c.coarse.DConverged);
     EXPECT_EQ(c.coarse.DSlopeChange, 3e-7);
+    EXPECT_EQ(c.coarse.DDrift, -2e-8);
     EXPECT_NE(c.coarse.DVerdict.find("MSD slope not flat"), std::string::npos) << c.coarse.DVerdict;
 
     const auto keys = storedSettingsKeys(h5);
