@@ -13,6 +13,8 @@
 //   model            linearSpringDashpot | hertzMindlin
 //   restitution, friction, normalStiffness, tangentialStiffnessRatio,
 //   tangentialDampingRatio, youngsModulus, poissonRatio
+//   pairs            per species pair, first/second:key=value[:key=value ...] with keys
+//                    restitution, friction, normalStiffness (unset: the single values)
 //   timeStep (0: half the recommended maximum), threads, seed
 //   equilibrationTime, maxEquilibrationTime, samplingTime [s], sampleEvery [steps], blocks
 //   progressEvery [steps], output (HDF5 file), label, skin [m]

@@ -8,31 +8,45 @@
 namespace sdf::correlation
 {
 
-double velocityCorrelationTime(const GreenKuboResult& greenKubo)
+double velocityCorrelationTime(const GreenKuboResult& greenKubo, double maxTime)
 {
     if (greenKubo.meanCorrelation.empty() || !(greenKubo.meanCorrelation.front() > 0))
     {
         return 0;
     }
-    const double peak = *std::max_element
-    (
-        greenKubo.meanRunningIntegral.begin(), greenKubo.meanRunningIntegral.end()
-    );
-    return std::max(0.0, peak)/greenKubo.meanCorrelation.front();
+    double peak = 0;
+    for (std::size_t k = 0; k < greenKubo.meanRunningIntegral.size(); ++k)
+    {
+        if (greenKubo.times[k] > maxTime) break;
+        peak = std::max(peak, greenKubo.meanRunningIntegral[k]);
+    }
+    return peak/greenKubo.meanCorrelation.front();
 }
 
 
 EinsteinWindow diffusiveWindow
 (
     double correlationTime,
-    double longestLag,
+    const std::vector<double>& times,
     int dimensions,
     const DiffusiveRegimeSettings& settings
 )
 {
-    const double start = settings.windowStartCorrelationTimes*correlationTime;
-    const double latestStart = longestLag/settings.minimumWindowRatio;
-    return {std::min(start, latestStart), longestLag, dimensions};
+    const std::size_t n = times.size();
+    if (n < 3)
+    {
+        throw std::invalid_argument("diffusiveWindow: needs >= 3 lags, got " + std::to_string(n));
+    }
+    // Starts on lags of the grid, so that the fit's inclusive bounds never lose a point
+    // to round-off: the first lag at or after the target, but no later than the last
+    // lag that leaves the minimum ratio and 3 lags
+    const double longest = times.back();
+    const double target = settings.windowStartCorrelationTimes*correlationTime;
+    const double latest = std::min(longest/settings.minimumWindowRatio, times[n - 3]);
+    std::size_t k = 0;
+    while (k < n - 3 && times[k] < target*(1 - 1e-12)) ++k;
+    while (k > 0 && times[k] > latest*(1 + 1e-12)) --k;
+    return {times[k], longest, dimensions};
 }
 
 
@@ -78,6 +92,7 @@ DiffusiveRegimeCheck checkDiffusiveRegime
     const EinsteinWindow& window,
     const Estimate& msd,
     const GreenKuboResult& greenKubo,
+    double correlationTime,
     const DiffusiveRegimeSettings& settings
 )
 {
@@ -86,7 +101,8 @@ DiffusiveRegimeCheck checkDiffusiveRegime
         throw std::invalid_argument("checkDiffusiveRegime: needs >= 2 blocks or replicas");
     }
     DiffusiveRegimeCheck check;
-    check.correlationTime = velocityCorrelationTime(greenKubo);
+    check.measured = true;
+    check.correlationTime = correlationTime;
     check.fitStart = window.fitStart;
     check.fitEnd = window.fitEnd;
     check.plateauFound = greenKubo.plateauFound;
@@ -134,6 +150,7 @@ DiffusiveRegimeCheck checkDiffusiveRegime
             times, blockMsd, window.fitStart, window.fitEnd, window.dimensions
         );
         const std::size_t half = perBlock.size()/2;
+        check.stationary = half < 2;   // not checked with fewer than 4 blocks
         if (half >= 2)
         {
             const Estimate earlier = meanAndStandardError
@@ -165,12 +182,30 @@ DiffusiveRegimeCheck checkDiffusiveRegime
 }
 
 
+namespace
+{
+
+//- What the percentages are of: |D_MSD|, or |D_GK| when the MSD's is not positive.
+double referenceOf(const Estimate& msd, const Estimate& greenKuboMinusMsd)
+{
+    if (msd.value > 0) return msd.value;
+    const double gk = std::abs(greenKuboMinusMsd.value + msd.value);
+    return gk > 0 ? gk : 1.0;
+}
+
+} // namespace
+
+
 std::string DiffusiveRegimeCheck::verdict() const
 {
     if (converged()) return "diffusive";
+    if (!measured)
+    {
+        return "MSD not measured (fewer than 8 position frames per block: sample longer)";
+    }
     std::string v;
     const auto add = [&v](const std::string& s) { v += (v.empty() ? "" : "; ") + s; };
-    const double reference = msd.value != 0 ? msd.value : 1.0;
+    const double reference = referenceOf(msd, greenKuboMinusMsd);
     if (!windowPastDecay) add("MSD window before the VACF's decay (blocks too short)");
     if (!slopeFlat)
     {
@@ -190,9 +225,7 @@ std::string DiffusiveRegimeCheck::verdict() const
     {
         add
         (
-            "D drifts over the run ("
-          + (drift.samples ? percent(drift, reference) : std::string("fewer than 4 blocks"))
-          + ")"
+            "D drifts over the run (" + percent(drift, reference) + ")"
         );
     }
     return v;
@@ -200,12 +233,13 @@ std::string DiffusiveRegimeCheck::verdict() const
 
 std::string DiffusiveRegimeCheck::figures() const
 {
-    const double reference = msd.value != 0 ? msd.value : 1.0;
+    if (!measured) return "MSD not measured";
+    const double reference = referenceOf(msd, greenKuboMinusMsd);
     return "MSD slope change "
       + (slopeChange.samples ? percent(slopeChange, reference) : std::string("not measured"))
       + ", Green-Kubo - MSD " + percent(greenKuboMinusMsd, reference)
       + ", drift over the run "
-      + (drift.samples ? percent(drift, reference) : std::string("not measured"));
+      + (drift.samples ? percent(drift, reference) : std::string("not checked (< 4 blocks)"));
 }
 
 } // namespace sdf::correlation

@@ -19,7 +19,8 @@
 //   5. the cell is stationary: D over the window from the later half of the blocks
 //      minus D from the earlier half is zero within agreementSigmas combined errors
 //      plus slopeTolerance D (a cell that ages, e.g. one that slowly orders or
-//      crystallises near phi 0.5, shows a D that falls with the run's length).
+//      crystallises near phi 0.5, shows a D that falls with the run's length); not
+//      checked with fewer than 4 blocks.
 //
 // Since I(t) is exactly half the MSD's local slope per component, 1-3 ask one
 // question three ways: has the velocity forgotten its past within the lags measured?
@@ -32,6 +33,7 @@
 #include "correlation/MeanSquareDisplacement.hpp"
 #include "correlation/Statistics.hpp"
 
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -49,16 +51,23 @@ struct DiffusiveRegimeSettings
     double slopeTolerance = 0.05;
 };
 
-//- tau_v = max_t I(t) / C(0) of a Green-Kubo result (0 if C(0) <= 0).
-double velocityCorrelationTime(const GreenKuboResult& greenKubo);
+//- tau_v = max_t I(t) / C(0) of a Green-Kubo result over lags t <= maxTime (0 if
+//  C(0) <= 0). Bounding the lags keeps the noisy far end of the VACF, where few pairs
+//  remain, from inflating tau_v: the cell run takes the MSD's longest lag.
+double velocityCorrelationTime
+(
+    const GreenKuboResult& greenKubo,
+    double maxTime = std::numeric_limits<double>::infinity()
+);
 
-//- The Einstein window past the VACF's decay: [windowStartCorrelationTimes tau_v,
-//  longestLag], or, when that leaves less than minimumWindowRatio, the last
-//  [longestLag / minimumWindowRatio, longestLag] (then the check fails on item 1).
+//- The Einstein window past the VACF's decay on the MSD's lag grid `times`: from the
+//  first lag at or after windowStartCorrelationTimes tau_v to the last lag; when that
+//  leaves less than minimumWindowRatio or fewer than 3 lags, from the last lag that
+//  leaves both (then the check fails on item 1). Needs >= 3 lags.
 EinsteinWindow diffusiveWindow
 (
     double correlationTime,
-    double longestLag,
+    const std::vector<double>& times,
     int dimensions,
     const DiffusiveRegimeSettings& settings = DiffusiveRegimeSettings()
 );
@@ -80,9 +89,14 @@ struct DiffusiveRegimeCheck
     bool plateauFound = false;
     bool stationary = false;
 
+    //- false: no MSD was measured (fewer than 8 frames per block); only
+    //  correlationTime and plateauFound are set
+    bool measured = false;
+
     bool converged() const
     {
-        return windowPastDecay && slopeFlat && greenKuboAgrees && plateauFound && stationary;
+        return measured && windowPastDecay && slopeFlat && greenKuboAgrees && plateauFound
+            && stationary;
     }
 
     //- "diffusive", or the failed items, e.g. "window before the VACF's decay;
@@ -95,7 +109,9 @@ struct DiffusiveRegimeCheck
 };
 
 //- blockMsd as for einsteinDiffusivity (one series per block, `window.dimensions`
-//  components summed); msd = einsteinDiffusivity's result over the same window.
+//  components summed); msd = einsteinDiffusivity's result over the same window;
+//  correlationTime the tau_v the window was made from. Stationarity (item 5) needs
+//  >= 4 blocks: with fewer it is not checked (drift.samples 0).
 DiffusiveRegimeCheck checkDiffusiveRegime
 (
     const std::vector<double>& times,
@@ -103,6 +119,7 @@ DiffusiveRegimeCheck checkDiffusiveRegime
     const EinsteinWindow& window,
     const Estimate& msd,
     const GreenKuboResult& greenKubo,
+    double correlationTime,
     const DiffusiveRegimeSettings& settings = DiffusiveRegimeSettings()
 );
 

@@ -82,23 +82,6 @@ void validateConstants
 
 void validateContactSettings(const ContactSettings& s)
 {
-    for (const PairContactSettings& p : s.pairs)
-    {
-        const std::string where = "pair " + p.first + "/" + p.second + ": ";
-        validateConstants
-        (
-            where, p.restitution.value_or(s.restitution), p.friction.value_or(s.friction),
-            p.normalStiffness
-        );
-        if (p.normalStiffness && s.model != ContactModel::linearSpringDashpot)
-        {
-            throw std::invalid_argument
-            (
-                where + "normalStiffness applies to the linearSpringDashpot law only"
-                " (hertzMindlin: youngsModulus and poissonRatio, one material)"
-            );
-        }
-    }
     const bool linear = s.model == ContactModel::linearSpringDashpot;
     validateConstants
     (
@@ -125,6 +108,25 @@ void validateContactSettings(const ContactSettings& s)
         if (!(s.poissonRatio > -1.0 && s.poissonRatio < 0.5))
         {
             throw std::invalid_argument("poissonRatio must be in (-1, 0.5)");
+        }
+    }
+    // the pairs after the single values, so a message names a pair only for its own
+    // entries
+    for (const PairContactSettings& p : s.pairs)
+    {
+        const std::string where = "pair " + p.first + "/" + p.second + ": ";
+        validateConstants
+        (
+            where, p.restitution.value_or(s.restitution), p.friction.value_or(s.friction),
+            p.normalStiffness
+        );
+        if (p.normalStiffness && s.model != ContactModel::linearSpringDashpot)
+        {
+            throw std::invalid_argument
+            (
+                where + "normalStiffness applies to the linearSpringDashpot law only"
+                " (hertzMindlin: youngsModulus and poissonRatio, one material)"
+            );
         }
     }
 }

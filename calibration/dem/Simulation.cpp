@@ -132,7 +132,7 @@ Simulation::Simulation
         msg << "timeStep dt = " << dt_ << " s exceeds the recommended maximum "
             << dtMax << " s ("
             << (law_.model() == ContactModel::linearSpringDashpot
-                ? "t_c/50 of the lightest pair, t_c = " + std::to_string(law_.contactDuration(1.0)) + " s"
+                ? "t_c/50 of the shortest contact over the species pairs, t_c = " + std::to_string(law_.contactDuration(1.0)) + " s"
                 : "0.2 x Rayleigh time of the smallest species")
             << ")";
         throw std::invalid_argument(msg.str());

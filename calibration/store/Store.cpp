@@ -2,6 +2,7 @@
 
 #include "io/Hdf5File.hpp"
 
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -56,6 +57,9 @@ SpeciesRecord readSpecies(const io::Group& g)
         s.DVerdict = r.readString("verdict");
         s.DSlopeChange = r.readDouble("slopeChange");
         if (r.hasAttribute("drift")) s.DDrift = r.readDouble("drift");
+        s.DFitStart = r.readDouble("fitStart");
+        s.DCorrelationTime = r.readDouble("correlationTime");
+        s.DWindowPastDecay = r.readInt64("windowPastDecay") != 0;
     }
     s.eta = optionalDouble(g, "eta");
     s.etaError = optionalDouble(g, "etaError");
@@ -283,10 +287,19 @@ std::string settingsKey(const dem::CellRunSettings& b, const std::string& contac
         << "; maxEquilibrationTime " << fmt10(b.maxEquilibrationTime)
         << "; samplingTime " << fmt10(b.samplingTime)
         << "; sampleEvery " << b.sampleEvery << "; blocks " << b.blocks;
-    // per-pair contact constants: named only when set, so the keys of older stores stand
-    for (const dem::PairContactSettings& p : c.pairs)
+    // per-pair contact constants: named only when set, so the keys of older stores
+    // stand; canonical (names of a pair in order, pairs in order), so the same physics
+    // given in another order reuses its conditions
+    std::vector<std::string> pairs;
+    for (dem::PairContactSettings p : c.pairs)
     {
-        key << "; pair " << dem::pairContactText(p);
+        if (p.second < p.first) std::swap(p.first, p.second);
+        pairs.push_back(dem::pairContactText(p));
+    }
+    std::sort(pairs.begin(), pairs.end());
+    for (const std::string& p : pairs)
+    {
+        key << "; pair " << p;
     }
     // the driving: named only when it is not the velocity-rescaling thermostat, so the
     // keys of stores written before the choice existed stay valid

@@ -157,6 +157,10 @@ struct SpeciesRecord
     std::string DVerdict;
     double DSlopeChange = 0;
     double DDrift = 0;
+    //- the Einstein window's start and tau_v [s]; whether it starts past 5 tau_v
+    double DFitStart = 0;
+    double DCorrelationTime = 0;
+    bool DWindowPastDecay = true;
     std::optional<double> eta;        // engine units (kg^2 m s^-3)
     std::optional<double> etaError;
 };

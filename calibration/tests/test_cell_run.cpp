@@ -114,3 +114,48 @@ TEST(CellRun, BadSettingsNameTheEntry)
     try { runCell(s); FAIL(); }
     catch (const std::invalid_argument& e) { EXPECT_NE(std::string(e.what()).find("timeStep"), std::string::npos); }
 }
+
+// The sheared cell of benchmarks/demVsLammps, small: over 0.4 s (40 strain, 8 blocks) D_yy
+// of both species is measured in the diffusive regime (the check passes, so Green-Kubo =
+// MSD within 2 combined errors) with the Einstein window past one strain; the LAMMPS
+// side by side is the benchmark (docs/validation.md).
+TEST(CellRun, ShearedCellIsMeasuredInTheDiffusiveRegime)
+{
+    CellRunSettings s;
+    s.species = {{"fine", 1e-3, 2500}, {"coarse", 2e-3, 2500}};
+    s.volumeFractions = {0.5, 0.5};
+    s.particles = 300;
+    s.solidsFraction = 0.5;
+    s.simulation.mode = CellMode::leesEdwards;
+    s.simulation.shearRate = 100;
+    s.simulation.contact.restitution = 0.7;
+    s.simulation.contact.friction = 0.5;
+    s.simulation.contact.normalStiffness = 2e3;
+    s.simulation.contact.tangentialStiffnessRatio = 2.0/7.0;
+    s.simulation.contact.tangentialDampingRatio = 0.5;
+    s.simulation.timeStep = 1e-6;
+    s.simulation.skin = 3e-4;
+    s.simulation.threads = 1;
+    s.equilibrationTime = s.maxEquilibrationTime = 0.03;
+    s.samplingTime = 0.4;
+    s.sampleEvery = 100;
+    s.blocks = 8;
+    const CellRunResult r = runCell(s);
+    std::cout << summary(r);
+    for (const SpeciesTransport& st : r.species)
+    {
+        SCOPED_TRACE(st.name);
+        const auto& check = st.diffusiveRegime;
+        EXPECT_TRUE(check.converged()) << check.verdict();
+        EXPECT_GE(s.simulation.shearRate*check.fitStart, 0.5);
+        EXPECT_LE
+        (
+            std::abs(check.greenKuboMinusMsd.value), 2*check.greenKuboMinusMsd.standardError
+        );
+        // D_yy/(gammaDot d^2) of dense sheared flows: 0.01-0.1 (validation.md)
+        const double d = st.name == "fine" ? 1e-3 : 2e-3;
+        const double scaled = st.diffusivityMsd.value/(100*d*d);
+        EXPECT_GT(scaled, 0.01);
+        EXPECT_LT(scaled, 0.1);
+    }
+}

@@ -91,7 +91,16 @@ TEST(Checkpoint, CellRunResumedGivesTheUninterruptedResult)
         EXPECT_EQ(resumed.species[k].greenKubo.integral.value, reference.species[k].greenKubo.integral.value);
         EXPECT_EQ(resumed.species[k].diffusivityMsd.value, reference.species[k].diffusivityMsd.value);
         EXPECT_EQ(resumed.species[k].temperature, reference.species[k].temperature);
+        EXPECT_EQ(resumed.species[k].temperatureError, reference.species[k].temperatureError);
+        const auto& a = resumed.species[k].diffusiveRegime;
+        const auto& b = reference.species[k].diffusiveRegime;
+        EXPECT_EQ(a.verdict(), b.verdict());
+        EXPECT_EQ(a.correlationTime, b.correlationTime);
+        EXPECT_EQ(a.slopeChange.value, b.slopeChange.value);
+        EXPECT_EQ(a.drift.value, b.drift.value);
     }
+    EXPECT_EQ(resumed.collectiveMotionTransverse.value, reference.collectiveMotionTransverse.value);
+    EXPECT_EQ(resumed.collectiveMotionLongitudinal.value, reference.collectiveMotionLongitudinal.value);
     EXPECT_EQ(resumed.meanStress, reference.meanStress);
     EXPECT_EQ(resumed.collisions.counts, reference.collisions.counts);
     EXPECT_EQ(resumed.collisions.histogram, reference.collisions.histogram);

@@ -25,6 +25,10 @@ void validateCellRunSettings(const CellRunSettings& s)
 {
     validateSpecies(s.species);
     validateContactSettings(s.simulation.contact);
+    if (!s.simulation.contact.pairs.empty())
+    {
+        ContactLaw(s.simulation.contact, s.species);   // the pairs' species names
+    }
     if (s.volumeFractions.size() != s.species.size())
     {
         throw std::invalid_argument("volumeFractions: one value per species required");
@@ -243,7 +247,8 @@ struct SamplingProgress
     double cpuBefore = 0;
 };
 
-const std::string checkpointFormat = "sdf_dem CellRun 1";
+// 2: the collective-motion sums were added (a format-1 checkpoint lacks them)
+const std::string checkpointFormat = "sdf_dem CellRun 2";
 
 void writeCellCheckpoint
 (
@@ -291,7 +296,12 @@ void readCellCheckpoint
     };
     if (!c.strings.count("cellRun_format") || c.strings.at("cellRun_format") != checkpointFormat)
     {
-        throw std::runtime_error("checkpoint '" + f + "': not a CellRun checkpoint");
+        throw std::runtime_error
+        (
+            "checkpoint '" + f + "': not a CellRun checkpoint of this version (format '"
+          + checkpointFormat + "'; one written before the collective-motion measurement"
+            " cannot be resumed: start the run again)"
+        );
     }
     if (needInt("cellRun_totalSteps") != plan.totalSteps || needInt("cellRun_sampleEvery") != settings.sampleEvery)
     {

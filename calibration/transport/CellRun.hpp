@@ -137,7 +137,7 @@ struct CellRunResult
 CellRunResult runCell(const CellRunSettings& settings);
 
 //- The diffusive-regime check as attributes of g (converged, verdict, correlationTime,
-//  fitStart, fitEnd, the slopes and differences with their errors, the four items'
+//  fitStart, fitEnd, the slopes and differences with their errors, the five items'
 //  flags): the cell file's and the calibration store's.
 void writeDiffusiveRegime(const io::Group& g, const correlation::DiffusiveRegimeCheck& check);
 

@@ -29,6 +29,7 @@ void writeGreenKubo(const io::Group& g, const correlation::GreenKuboResult& gk)
 void writeDiffusiveRegime(const io::Group& g, const correlation::DiffusiveRegimeCheck& c)
 {
     g.setAttribute("converged", std::int64_t(c.converged() ? 1 : 0));
+    g.setAttribute("measured", std::int64_t(c.measured ? 1 : 0));
     g.setAttribute("verdict", c.verdict());
     g.setAttribute("correlationTime", c.correlationTime);
     g.setAttribute("fitStart", c.fitStart);

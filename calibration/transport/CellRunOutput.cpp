@@ -105,6 +105,12 @@ std::string summary(const CellRunResult& r)
             << st.diffusivityMsd.standardError << " m2/s\n";
         const correlation::DiffusiveRegimeCheck& c = st.diffusiveRegime;
         if (c.correlationTime <= 0) continue;
+        if (!c.measured)
+        {
+            out << "    diffusive regime: NO, " << c.verdict() << " (tau_v = "
+                << c.correlationTime << " s)\n";
+            continue;
+        }
         out << "    diffusive regime: " << (c.converged() ? "yes" : "NO, ")
             << (c.converged() ? "" : c.verdict()) << " (" << c.figures()
             << "; tau_v = " << c.correlationTime

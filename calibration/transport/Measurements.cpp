@@ -217,18 +217,26 @@ void VelocityAutocorrelation::finish(CellRunResult& result, long) const
             correlators_[s].blocks(), plan_.sampleInterval, plan_.diffusionComponent,
             plateauSettings(plan_)
         );
+        // tau_v from lags up to half a block, the MSD's longest
+        const double tauV = correlation::velocityCorrelationTime
+        (
+            first, 0.5*plan_.samplesPerBlock*plan_.sampleInterval
+        );
         correlation::PlateauSettings pastDecay = plateauSettings(plan_);
         pastDecay.earliestTime = std::max
         (
             pastDecay.earliestTime,
-            correlation::DiffusiveRegimeSettings().windowStartCorrelationTimes
-           *correlation::velocityCorrelationTime(first)
+            correlation::DiffusiveRegimeSettings().windowStartCorrelationTimes*tauV
         );
-        result.species[s].greenKubo = correlation::greenKubo
+        SpeciesTransport& st = result.species[s];
+        st.greenKubo = correlation::greenKubo
         (
             correlators_[s].blocks(), plan_.sampleInterval, plan_.diffusionComponent,
             pastDecay
         );
+        // what the MSD's finish starts from (and all a species without an MSD gets)
+        st.diffusiveRegime.correlationTime = tauV;
+        st.diffusiveRegime.plateauFound = st.greenKubo.plateauFound;
     }
 }
 
@@ -331,15 +339,14 @@ void MeanSquareDisplacementMeasurement::finish(CellRunResult& result, long) cons
             series.push_back(v);
         }
         SpeciesTransport& st = result.species[s];
-        const correlation::EinsteinWindow window = correlation::diffusiveWindow
-        (
-            correlation::velocityCorrelationTime(st.greenKubo), times.back(), comp == 1 ? 1 : 3
-        );
+        const double tauV = st.diffusiveRegime.correlationTime;
+        const correlation::EinsteinWindow window =
+            correlation::diffusiveWindow(tauV, times, comp == 1 ? 1 : 3);
         const auto einstein = correlation::einsteinDiffusivity(times, series, window);
         st.diffusivityMsd = einstein.diffusivity;
         st.diffusiveRegime = correlation::checkDiffusiveRegime
         (
-            times, series, window, einstein.diffusivity, st.greenKubo
+            times, series, window, einstein.diffusivity, st.greenKubo, tauV
         );
         st.msdTimes = times;
         st.msd = einstein.meanMsd;

@@ -87,7 +87,7 @@ test_calibration_resume()
 test_calibration_bad_input()
 {
     local dir="$workRoot/calibrationBad" kind
-    local kinds="unknownCoefficient unknownLaw emptyPhi invertedT jammedPhi negativeT xOutside textStore foreignHdf5 shearedMode"
+    local kinds="unknownCoefficient unknownLaw emptyPhi invertedT jammedPhi negativeT xOutside textStore foreignHdf5 shearedMode pairUnknownSpecies pairSetsNothing pairRestitution"
     [ -f "$workRoot/calibration/constant/calibration.h5" ] && kinds="$kinds truncatedStore settingsChanged drivingChanged"
     for kind in $kinds
     do
@@ -107,6 +107,12 @@ test_calibration_bad_input()
                 foamDictionary -entry phi -set "(0.2 0.35 0.5)" "$d" > /dev/null
                 foamDictionary -entry particles -set 300 "$d" > /dev/null; expect="other DEM settings" ;;
             shearedMode) foamDictionary -entry mode -set leesEdwards "$d" > /dev/null; expect="stochastic" ;;
+            pairUnknownSpecies) foamDictionary -entry contact/pairs -set "{ glassSand { species (fine sand); restitution 0.7; } }" "$d" > /dev/null
+                expect="unknown species 'sand'; valid: fine coarse" ;;
+            pairSetsNothing) foamDictionary -entry contact/pairs -set "{ fineCoarse { species (fine coarse); } }" "$d" > /dev/null
+                expect="contact/pairs/fineCoarse' sets nothing" ;;
+            pairRestitution) foamDictionary -entry contact/pairs -set "{ fineCoarse { species (fine coarse); restitution 1.4; } }" "$d" > /dev/null
+                expect="pair fine/coarse: restitution e = 1.4" ;;
             drivingChanged) cp "$workRoot/calibration/constant/calibration.h5" "$dir/constant/"
                 foamDictionary -entry phi -set "(0.2 0.35 0.5)" "$d" > /dev/null
                 foamDictionary -entry mode -set stochastic "$d" > /dev/null; expect="other DEM settings" ;;

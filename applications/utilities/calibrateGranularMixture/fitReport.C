@@ -213,24 +213,29 @@ std::vector<StoredResult> readResults
             {
                 // Weighted down, not dropped: the disagreements that failed
                 // the check (Green-Kubo - MSD, the MSD slope's change over its
-                // window, the drift of D over the run) are added to the error in quadrature, so a
-                // condition whose lags were too short counts as what it is,
-                // an estimate with a systematic error of that size
-                // (docs/user/calibration.md)
-                const scalar gkMinusMsd =
-                    record.fine.DMsd ? r.D - *record.fine.DMsd : 0;
+                // window, the drift of D over the run) and, for a window that
+                // starts before the VACF's decay, the deficit of an
+                // exponential VACF there, D exp(-t_start/tau_v), are added to
+                // the error in quadrature, so a condition whose lags were too
+                // short counts as what it is, an estimate with a systematic
+                // error of that size (docs/user/calibration.md)
+                const sdf::store::SpeciesRecord& f = record.fine;
+                const scalar gkMinusMsd = f.DMsd ? r.D - *f.DMsd : r.D;
+                const scalar truncation =
+                    !f.DWindowPastDecay && f.DCorrelationTime > 0
+                  ? r.D*std::exp(-f.DFitStart/f.DCorrelationTime)
+                  : 0;
                 r.DNotConverged = true;
-                r.DVerdict = record.fine.DVerdict;
+                r.DVerdict = f.DVerdict;
                 r.DError = std::sqrt
                 (
-                    sqr(r.DError) + sqr(gkMinusMsd)
-                  + sqr(record.fine.DSlopeChange) + sqr(record.fine.DDrift)
+                    sqr(r.DError) + sqr(gkMinusMsd) + sqr(f.DSlopeChange)
+                  + sqr(f.DDrift) + sqr(truncation)
                 );
                 Info<< "    condition " << c.name.c_str()
                     << ": D of the fines not in the diffusive regime ("
                     << r.DVerdict.c_str() << "); its error in the fit raised from "
-                    << *record.fine.DError << " to " << r.DError << " m2/s"
-                    << nl;
+                    << *f.DError << " to " << r.DError << " m2/s" << nl;
             }
             if (record.coarse.eta && !record.coarse.etaError)
             {

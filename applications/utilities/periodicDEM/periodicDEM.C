@@ -34,6 +34,10 @@ Description
         normalStiffness 2e5;        // [N/m] linear
         youngsModulus   1e7;        // [Pa] Hertz
         poissonRatio    0.3;
+        pairs                       // optional: constants of one species pair
+        {
+            fineCoarse { species (fine coarse); restitution 0.7; friction 0.4; }
+        }
     }
     timeStep            0;          // 0: half the recommended maximum
     equilibrationTime   0.02;       // [s]

@@ -36,7 +36,7 @@ DiffusiveRegimeCheck measure
         blockEstimates(vectorAutocorrelation, trajectory.velocities, maxLag, blocks), -1
     );
     const double tauV = velocityCorrelationTime(greenKubo(times, vacf));
-    const EinsteinWindow window = diffusiveWindow(tauV, times.back(), 3);
+    const EinsteinWindow window = diffusiveWindow(tauV, times, 3);
     PlateauSettings plateau;
     plateau.earliestTime = window.fitStart;
     gk = greenKubo(times, vacf, plateau);
@@ -49,7 +49,7 @@ DiffusiveRegimeCheck measure
         for (Eigen::Index k = 0; k < b.rows(); ++k) msd.back()[k] = b.row(k).sum();
     }
     einstein = einsteinDiffusivity(times, msd, window);
-    return checkDiffusiveRegime(times, msd, window, einstein.diffusivity, gk);
+    return checkDiffusiveRegime(times, msd, window, einstein.diffusivity, gk, tauV);
 }
 
 } // namespace
@@ -67,11 +67,20 @@ TEST(DiffusiveRegime, CorrelationTimeOfAnExponentialIsTau)
     gk.meanRunningIntegral = runningIntegral(gk.times, gk.meanCorrelation);
     EXPECT_NEAR(velocityCorrelationTime(gk), 0.5, 1e-4);
 
-    const EinsteinWindow w = diffusiveWindow(0.5, 10.0, 3);
-    EXPECT_DOUBLE_EQ(w.fitStart, 2.5);
-    EXPECT_DOUBLE_EQ(w.fitEnd, 10.0);
-    // Too short: the last third of the lags, flagged by the check.
-    EXPECT_NEAR(diffusiveWindow(0.5, 3.0, 1).fitStart, 2.0, 1e-12);
+    // The window starts on the lag grid: the first lag at or after 5 tau_v
+    const std::vector<double> lags = uniformTimes(101, 0.1);
+    const EinsteinWindow w = diffusiveWindow(0.5, lags, 3);
+    EXPECT_EQ(w.fitStart, lags[25]);
+    EXPECT_EQ(w.fitEnd, 10.0);
+    EXPECT_EQ(diffusiveWindow(0.493, lags, 3).fitStart, lags[25]);
+    // A decay time past the lags: the last third, flagged by the check
+    EXPECT_EQ(diffusiveWindow(0.5, uniformTimes(31, 0.1), 1).fitStart, uniformTimes(31, 0.1)[20]);
+    // Few lags: the last three stay in the window (the fit needs 3 points)
+    const std::vector<double> five = uniformTimes(5, 0.1);
+    EXPECT_EQ(diffusiveWindow(10.0, five, 3).fitStart, five[2]);
+    EXPECT_THROW(diffusiveWindow(0.5, uniformTimes(2, 0.1), 3), std::invalid_argument);
+    // tau_v over bounded lags: the exponential's tau from its first 2 time units
+    EXPECT_NEAR(velocityCorrelationTime(gk, 2.0), 0.5*(1 - std::exp(-4.0)), 1e-3);
 }
 
 TEST(DiffusiveRegime, LongBlocksOfAnExponentialVacfPass)
@@ -81,7 +90,8 @@ TEST(DiffusiveRegime, LongBlocksOfAnExponentialVacfPass)
     EinsteinResult einstein;
     const DiffusiveRegimeCheck check = measure(makeOuTrajectory(ou), ou.dt, 400, 10, gk, einstein);
     EXPECT_NEAR(check.correlationTime, ou.tau, 0.05*ou.tau);
-    EXPECT_NEAR(check.fitStart, 5*check.correlationTime, 1e-12);
+    EXPECT_GE(check.fitStart, 5*check.correlationTime);
+    EXPECT_LT(check.fitStart, 5*check.correlationTime + ou.dt);
     EXPECT_TRUE(check.windowPastDecay);
     EXPECT_TRUE(check.slopeFlat) << check.verdict();
     EXPECT_TRUE(check.greenKuboAgrees) << check.verdict();

@@ -39,7 +39,8 @@ inline dem::CellRunResult syntheticResult(double scale = 1)
         check.correlationTime = 1e-3;
         check.fitStart = 5e-3;
         check.fitEnd = 2e-2;
-        check.windowPastDecay = check.greenKuboAgrees = check.plateauFound = check.stationary = true;
+        check.measured = check.windowPastDecay = check.greenKuboAgrees = check.plateauFound = true;
+        check.stationary = true;
         check.slopeFlat = sp.name != "large";
         check.slopeChange = {check.slopeFlat ? 1e-8 : 3e-7, 1e-7, 8};
         check.drift = {-2e-8, 1e-7, 8};

@@ -200,6 +200,32 @@ TEST(store, settingsKeyFingerprintsEveryDEMSetting)
     EXPECT_NE(changed([](auto& s) { s.blocks = 4; }), key);
     // The condition is not part of the fingerprint
     EXPECT_EQ(changed([](auto& s) { s.solidsFraction = 0.45; s.seed = 7; }), key);
+
+    // Per-pair constants are, in a canonical order: the same pairs given in another
+    // order (or with a pair's names swapped) make the same key
+    const auto pair = [](const char* a, const char* b, double e)
+    {
+        sdf::dem::PairContactSettings p;
+        p.first = a;
+        p.second = b;
+        p.restitution = e;
+        return p;
+    };
+    const std::string withPairs = changed([&](auto& s)
+    {
+        s.simulation.contact.pairs = {pair("small", "large", 0.7), pair("large", "large", 0.5)};
+    });
+    EXPECT_NE(withPairs, key);
+    EXPECT_NE(withPairs.find("; pair large/large: e 0.5; pair large/small: e 0.7"), std::string::npos)
+        << withPairs;
+    EXPECT_EQ(changed([&](auto& s)
+    {
+        s.simulation.contact.pairs = {pair("large", "large", 0.5), pair("large", "small", 0.7)};
+    }), withPairs);
+    EXPECT_NE(changed([&](auto& s)
+    {
+        s.simulation.contact.pairs = {pair("small", "large", 0.6), pair("large", "large", 0.5)};
+    }), withPairs);
 }
 
 

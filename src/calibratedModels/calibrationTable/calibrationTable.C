@@ -184,6 +184,16 @@ void Foam::calibrationTable::read()
             if (isD)
             {
                 c.value = record.fine.D;
+                if (record.fine.DConverged && !*record.fine.DConverged)
+                {
+                    // Interpolated as stored: a table has no errors to
+                    // weight by (the fit does: docs/user/calibration.md)
+                    WarningInFunction
+                        << "Calibration table " << file_ << ": D of condition "
+                        << record.name.c_str() << " is not in the diffusive"
+                        << " regime (" << record.fine.DVerdict.c_str()
+                        << "); it is interpolated as stored" << endl;
+                }
             }
             else
             {
