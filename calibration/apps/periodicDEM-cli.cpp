@@ -24,6 +24,7 @@
 //   rounds; prints the speed-ups), checkpointFile, checkpointEvery [steps],
 //   resume (1: continue the sampling from checkpointFile, same settings)
 #include "CellRun.hpp"
+#include "CellSettings.hpp"
 
 #include <fstream>
 #include <iostream>
@@ -45,16 +46,20 @@ std::string trim(const std::string& s)
     return s.substr(a, b - a + 1);
 }
 
-const std::set<std::string> validKeys =
+//- The keys that are not scalar settings of the cell (those come from CellSettings.hpp)
+const std::set<std::string> otherKeys =
 {
-    "species", "volumeFractions", "particles", "solidsFraction", "mode", "temperature",
-    "shearRate", "model", "restitution", "friction", "normalStiffness",
-    "tangentialStiffnessRatio", "tangentialDampingRatio", "youngsModulus", "poissonRatio",
-    "timeStep", "threads", "seed", "equilibrationTime", "samplingTime", "sampleEvery",
-    "blocks", "progressEvery", "output", "label", "thermostatTime", "maxOverlapFraction",
-    "lammpsData", "throughputOnly", "threadScalingRounds", "skin", "maxEquilibrationTime",
-    "checkpointFile", "checkpointEvery", "resume", "pairs"
+    "species", "volumeFractions", "mode", "model", "pairs", "progressEvery", "output",
+    "label", "lammpsData", "throughputOnly", "threadScalingRounds", "checkpointFile",
+    "checkpointEvery", "resume"
 };
+
+std::set<std::string> validKeys()
+{
+    std::set<std::string> keys = otherKeys;
+    for (const CellSetting& s : cellSettings()) keys.insert(s.name);
+    return keys;
+}
 
 void addPair(std::map<std::string, std::string>& config, const std::string& line, const std::string& where)
 {
@@ -64,11 +69,12 @@ void addPair(std::map<std::string, std::string>& config, const std::string& line
         throw std::invalid_argument(where + ": expected key = value, got '" + line + "'");
     }
     const std::string key = trim(line.substr(0, eq));
-    if (!validKeys.count(key))
+    const std::set<std::string> valid = validKeys();
+    if (!valid.count(key))
     {
-        std::string valid;
-        for (const auto& k : validKeys) valid += " " + k;
-        throw std::invalid_argument(where + ": unknown key '" + key + "'; valid keys:" + valid);
+        std::string names;
+        for (const auto& k : valid) names += " " + k;
+        throw std::invalid_argument(where + ": unknown key '" + key + "'; valid keys:" + names);
     }
     config[key] = trim(line.substr(eq + 1));
 }
@@ -179,31 +185,15 @@ CellRunSettings settingsFrom(const std::map<std::string, std::string>& c)
     {
         s.volumeFractions.assign(s.species.size(), 1.0/s.species.size());
     }
-    s.particles = int(number(c, "particles", 1000));
-    s.solidsFraction = number(c, "solidsFraction", 0.3);
+    // every scalar setting by its one description; the defaults are CellRunSettings'
+    for (const auto& [key, value] : c)
+    {
+        setCellSetting(s, key, value);
+    }
     SimulationSettings& sim = s.simulation;
     sim.mode = cellModeFromName(text(c, "mode", "thermostatted"));
-    sim.targetTemperature = number(c, "temperature", 0.0);
-    sim.shearRate = number(c, "shearRate", 0.0);
-    sim.thermostatTime = number(c, "thermostatTime", 0.0);
-    sim.maxOverlapFraction = number(c, "maxOverlapFraction", 0.1);
     sim.contact.model = contactModelFromName(text(c, "model", "linearSpringDashpot"));
-    sim.contact.restitution = number(c, "restitution", 0.9);
-    sim.contact.friction = number(c, "friction", 0.5);
-    sim.contact.normalStiffness = number(c, "normalStiffness", 2e5);
-    sim.contact.tangentialStiffnessRatio = number(c, "tangentialStiffnessRatio", 2.0/7.0);
-    sim.contact.tangentialDampingRatio = number(c, "tangentialDampingRatio", 0.5);
-    sim.contact.youngsModulus = number(c, "youngsModulus", 1e7);
-    sim.contact.poissonRatio = number(c, "poissonRatio", 0.3);
     if (c.count("pairs")) sim.contact.pairs = pairsFrom(c.at("pairs"));
-    sim.timeStep = number(c, "timeStep", 0.0);
-    sim.threads = int(number(c, "threads", 0));
-    s.seed = std::uint64_t(number(c, "seed", 1));
-    s.equilibrationTime = number(c, "equilibrationTime", 0.0);
-    s.maxEquilibrationTime = number(c, "maxEquilibrationTime", 0.0);
-    s.samplingTime = number(c, "samplingTime", 0.0);
-    s.sampleEvery = int(number(c, "sampleEvery", 10));
-    s.blocks = int(number(c, "blocks", 8));
     s.progressEvery = long(number(c, "progressEvery", 0));
     s.label = text(c, "label", "periodicDEM");
     s.lammpsDataFile = text(c, "lammpsData", "");
@@ -212,7 +202,6 @@ CellRunSettings settingsFrom(const std::map<std::string, std::string>& c)
     s.checkpointFile = text(c, "checkpointFile", "");
     s.checkpointEvery = long(number(c, "checkpointEvery", 0));
     s.resume = number(c, "resume", 0) != 0;
-    sim.skin = number(c, "skin", -1);
     return s;
 }
 

@@ -1,6 +1,7 @@
 #include "store/Store.hpp"
 
 #include "io/Hdf5File.hpp"
+#include "CellSettings.hpp"
 
 #include <algorithm>
 #include <cstdio>
@@ -274,19 +275,21 @@ std::string settingsKey(const dem::CellRunSettings& b, const std::string& contac
     {
         key << " " << sp.name << ":" << fmt10(sp.diameter) << ":" << fmt10(sp.density);
     }
-    key << "; particles " << b.particles
-        << "; contact " << contactModel
-        << " e " << fmt10(c.restitution) << " mu " << fmt10(c.friction)
-        << " kn " << fmt10(c.normalStiffness)
-        << " kt/kn " << fmt10(c.tangentialStiffnessRatio)
-        << " gt/gn " << fmt10(c.tangentialDampingRatio)
-        << " E " << fmt10(c.youngsModulus) << " nu " << fmt10(c.poissonRatio)
-        << "; timeStep " << fmt10(sim.timeStep)
-        << "; thermostatTime " << fmt10(sim.thermostatTime)
-        << "; equilibrationTime " << fmt10(b.equilibrationTime)
-        << "; maxEquilibrationTime " << fmt10(b.maxEquilibrationTime)
-        << "; samplingTime " << fmt10(b.samplingTime)
-        << "; sampleEvery " << b.sampleEvery << "; blocks " << b.blocks;
+    // the scalar settings from their one description (CellSettings.hpp): the condition's
+    // labelled ones, the contact law's constants after its name, then the run controls
+    using Scope = dem::CellSetting::Scope;
+    const auto labelled = [&](Scope scope, const char* separator)
+    {
+        for (const dem::CellSetting& setting : dem::cellSettings())
+        {
+            if (setting.scope != scope || !setting.fingerprint) continue;
+            key << separator << setting.fingerprint << " " << dem::cellSettingText(setting, b);
+        }
+    };
+    labelled(Scope::condition, "; ");
+    key << "; contact " << contactModel;
+    labelled(Scope::contact, " ");
+    labelled(Scope::runControl, "; ");
     // per-pair contact constants: named only when set, so the keys of older stores
     // stand; canonical (names of a pair in order, pairs in order), so the same physics
     // given in another order reuses its conditions

@@ -3,6 +3,7 @@
 // atomically and readable. (The 5 % comparison with Chapman-Enskog needs ~100 mean free
 // times and runs in benchmarks/demTransport.)
 #include "CellRun.hpp"
+#include "CellSettings.hpp"
 #include "TestCells.hpp"
 
 #include "io/Hdf5File.hpp"
@@ -11,6 +12,7 @@
 
 #include <cstdio>
 #include <fstream>
+#include <set>
 
 using namespace sdf::dem;
 
@@ -81,6 +83,20 @@ TEST(CellRun, DiluteGasPipelineAndHdf5)
     const sdf::io::File file = sdf::io::File::openReadOnly(path);
     const sdf::io::Group root = file.root();
     EXPECT_NEAR(root.openGroup("inputs").readDouble("solidsFraction"), 0.05, 1e-15);
+    // every scalar setting of the one description, under its name, as given
+    for (const CellSetting& setting : cellSettings())
+    {
+        const sdf::io::Group inputs = root.openGroup("inputs");
+        if (setting.integer)
+        {
+            EXPECT_EQ(inputs.readInt64(setting.name), std::int64_t(setting.get(settings))) << setting.name;
+        }
+        else
+        {
+            EXPECT_EQ(inputs.readDouble(setting.name), setting.get(settings)) << setting.name;
+        }
+    }
+    EXPECT_EQ(root.openGroup("run").readDouble("timeStep"), r.timeStep);
     const sdf::io::Group gk = root.openGroup("results").openGroup("species").openGroup("glass")
         .openGroup("greenKubo");
     EXPECT_DOUBLE_EQ(gk.readDouble("value"), st.greenKubo.integral.value);
@@ -158,4 +174,43 @@ TEST(CellRun, ShearedCellIsMeasuredInTheDiffusiveRegime)
         EXPECT_GT(scaled, 0.01);
         EXPECT_LT(scaled, 0.1);
     }
+}
+
+// The one description of the scalar settings: names unique, each set and read back
+// through its text form, whole numbers required for integers, unknown names left alone.
+TEST(CellSettings, EachSettingRoundTripsByName)
+{
+    std::set<std::string> names;
+    for (const CellSetting& setting : cellSettings())
+    {
+        EXPECT_TRUE(names.insert(setting.name).second) << "twice: " << setting.name;
+        CellRunSettings s;
+        const std::string value = setting.integer ? "7" : "0.125";
+        ASSERT_TRUE(setCellSetting(s, setting.name, value)) << setting.name;
+        EXPECT_EQ(setting.get(s), setting.integer ? 7.0 : 0.125) << setting.name;
+        EXPECT_EQ(cellSettingText(setting, s), setting.integer ? "7" : "0.125");
+        EXPECT_EQ(findCellSetting(setting.name), &setting);
+    }
+    CellRunSettings s;
+    EXPECT_FALSE(setCellSetting(s, "colour", "1"));
+    const auto refused = [&](const std::string& name, const std::string& text, const std::string& expected)
+    {
+        try
+        {
+            setCellSetting(s, name, text);
+            ADD_FAILURE() << name << " = " << text << " accepted";
+        }
+        catch (const std::invalid_argument& e)
+        {
+            EXPECT_NE(std::string(e.what()).find(expected), std::string::npos) << e.what();
+        }
+    };
+    refused("particles", "3.5", "entry 'particles': not a whole number");
+    refused("restitution", "0.9x", "entry 'restitution': not a number");
+    refused("samplingTime", "", "entry 'samplingTime': not a number");
+    // the dictionaries' valid entries per scope
+    const auto contact = cellSettingNames(CellSetting::Scope::contact);
+    EXPECT_EQ(contact.front(), "restitution");
+    EXPECT_EQ(contact.size(), 7u);
+    EXPECT_EQ(findCellSetting("samplingTime")->required, true);
 }

@@ -1,4 +1,5 @@
 #include "CellRun.hpp"
+#include "CellSettings.hpp"
 
 #include "io/Hdf5File.hpp"
 
@@ -61,7 +62,18 @@ void writeInputs(const io::Group& inputs, const CellRunResult& r)
     const CellRunSettings& s = r.settings;
     inputs.setAttribute("mode", cellModeName(s.simulation.mode));
     inputs.setAttribute("contactModel", contactModelName(s.simulation.contact.model));
-    inputs.setAttribute("restitution", s.simulation.contact.restitution);
+    // every scalar setting under its one name (CellSettings.hpp)
+    for (const CellSetting& setting : cellSettings())
+    {
+        if (setting.integer)
+        {
+            inputs.setAttribute(setting.name, std::int64_t(setting.get(s)));
+        }
+        else
+        {
+            inputs.setAttribute(setting.name, setting.get(s));
+        }
+    }
     {
         std::string pairs;
         for (const PairContactSettings& p : s.simulation.contact.pairs)
@@ -70,21 +82,6 @@ void writeInputs(const io::Group& inputs, const CellRunResult& r)
         }
         inputs.setAttribute("pairContacts", pairs);
     }
-    inputs.setAttribute("friction", s.simulation.contact.friction);
-    inputs.setAttribute("normalStiffness", s.simulation.contact.normalStiffness);
-    inputs.setAttribute("youngsModulus", s.simulation.contact.youngsModulus);
-    inputs.setAttribute("poissonRatio", s.simulation.contact.poissonRatio);
-    inputs.setAttribute("particles", std::int64_t(s.particles));
-    inputs.setAttribute("solidsFraction", s.solidsFraction);
-    inputs.setAttribute("targetTemperature", s.simulation.targetTemperature);
-    inputs.setAttribute("shearRate", s.simulation.shearRate);
-    inputs.setAttribute("timeStep", r.timeStep);
-    inputs.setAttribute("samplingTime", s.samplingTime);
-    inputs.setAttribute("equilibrationTime", s.equilibrationTime);
-    inputs.setAttribute("sampleEvery", std::int64_t(s.sampleEvery));
-    inputs.setAttribute("blocks", std::int64_t(s.blocks));
-    inputs.setAttribute("seed", std::int64_t(s.seed));
-    inputs.setAttribute("threads", std::int64_t(s.simulation.threads));
     inputs.setAttribute("temperatureConvention", "T = <|c|^2>, sum of the three components; T1 = T/3");
     {
         std::vector<double> d, rho;
@@ -108,6 +105,7 @@ void writeRun(const io::Group& run, const CellRunResult& r)
 {
     run.setAttribute("version", "sdf_dem 1");
     run.setAttribute("boxLength", r.boxLength);
+    run.setAttribute("timeStep", r.timeStep);
     run.setAttribute("steps", std::int64_t(r.steps));
     run.setAttribute("wallSeconds", r.wallSeconds);
     run.setAttribute("cpuSeconds", r.cpuSeconds);

@@ -70,10 +70,10 @@ using namespace Foam;
 namespace
 {
 
-const wordList validEntries
+//- Entries besides the cell's settings (calibration/transport/CellSettings.hpp)
+const wordList otherEntries
 ({
-    "name", "composition", "particles", "solidsFraction", "mode",
-    "temperature", "shearRate", "seed", "progressEvery"
+    "name", "composition", "mode", "progressEvery"
 });
 
 
@@ -83,7 +83,8 @@ sdf::dem::CellRunSettings readSettings
     const dictionary& dict
 )
 {
-    wordList valid(validEntries);
+    wordList valid(otherEntries);
+    valid.append(demDictionary::settingNames(sdf::dem::CellSetting::Scope::condition));
     valid.append(demDictionary::runControlEntries());
     modelCoeffs::checkKeys(dict, valid);
 
@@ -122,8 +123,8 @@ sdf::dem::CellRunSettings readSettings
             << "'composition' names no species" << nl << exit(FatalIOError);
     }
 
-    s.particles = dict.getOrDefault<label>("particles", 1000);
-    s.solidsFraction = dict.getOrDefault<scalar>("solidsFraction", 0.3);
+    // particles, solidsFraction, temperature, shearRate, seed
+    demDictionary::readSettings(dict, sdf::dem::CellSetting::Scope::condition, s);
 
     sdf::dem::SimulationSettings& sim = s.simulation;
     try
@@ -138,10 +139,7 @@ sdf::dem::CellRunSettings readSettings
         FatalIOErrorInFunction(dict)
             << "Entry 'mode': " << err.what() << nl << exit(FatalIOError);
     }
-    sim.targetTemperature = dict.getOrDefault<scalar>("temperature", 0);
-    sim.shearRate = dict.getOrDefault<scalar>("shearRate", 0);
     demDictionary::readRunControls(dict, s);
-    s.seed = dict.getOrDefault<label>("seed", 1);
     s.progressEvery = dict.getOrDefault<label>("progressEvery", 10000);
     s.label = dict.getOrDefault<word>("name", "periodicDEM");
 
