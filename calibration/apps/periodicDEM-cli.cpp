@@ -3,21 +3,20 @@
 //
 //   periodicDEM-cli cell.cfg [key=value ...]      command-line pairs override the file
 //
-// Keys (SI units; '#' starts a comment):
+// Keys (SI units; '#' starts a comment): the scalar settings of the cell, by the names of
+// transport/CellSettings.cpp (particles, solidsFraction, temperature, shearRate, seed; the
+// contact constants restitution, friction, normalStiffness, tangentialStiffnessRatio,
+// tangentialDampingRatio, youngsModulus, poissonRatio; the run controls timeStep (0: half
+// the recommended maximum), thermostatTime, equilibrationTime, maxEquilibrationTime,
+// samplingTime [s], sampleEvery [steps], blocks, threads, skin [m], maxOverlapFraction),
+// and:
 //   species          name:diameter:density [name:diameter:density ...]
 //   volumeFractions  solids volume fraction of each species (default: equal)
-//   particles, solidsFraction, mode (nve | thermostatted | leesEdwards | stochastic)
-//   temperature      T = <|c|^2> (sum of three components) [m2/s2]: the thermostat's
-//                    target, or the initial T of an nve cell
-//   shearRate        gammaDot [1/s] (leesEdwards)
+//   mode             nve | thermostatted (default) | leesEdwards | stochastic
 //   model            linearSpringDashpot | hertzMindlin
-//   restitution, friction, normalStiffness, tangentialStiffnessRatio,
-//   tangentialDampingRatio, youngsModulus, poissonRatio
 //   pairs            per species pair, first/second:key=value[:key=value ...] with keys
 //                    restitution, friction, normalStiffness (unset: the single values)
-//   timeStep (0: half the recommended maximum), threads, seed
-//   equilibrationTime, maxEquilibrationTime, samplingTime [s], sampleEvery [steps], blocks
-//   progressEvery [steps], output (HDF5 file), label, skin [m]
+//   progressEvery [steps], output (HDF5 file), label
 //   lammpsData (write the initial state as a LAMMPS data file), throughputOnly (1: no
 //   measurements, only T; for speed comparisons), threadScalingRounds (with throughputOnly:
 //   the equilibrated state run alternately on 1 and on `threads` threads, this many

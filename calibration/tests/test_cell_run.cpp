@@ -206,6 +206,9 @@ TEST(CellSettings, EachSettingRoundTripsByName)
         }
     };
     refused("particles", "3.5", "entry 'particles': not a whole number");
+    refused("seed", "-1", "entry 'seed': -1 outside [0, 2^53)");
+    refused("blocks", "1e10", "entry 'blocks': 10000000000 outside [0, 2^31)");
+    refused("friction", "inf", "entry 'friction': not a finite number");
     refused("restitution", "0.9x", "entry 'restitution': not a number");
     refused("samplingTime", "", "entry 'samplingTime': not a number");
     // the dictionaries' valid entries per scope

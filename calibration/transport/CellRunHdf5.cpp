@@ -103,7 +103,9 @@ void writeInputs(const io::Group& inputs, const CellRunResult& r)
 //- run: steps, timings, equilibration
 void writeRun(const io::Group& run, const CellRunResult& r)
 {
-    run.setAttribute("version", "sdf_dem 1");
+    // 2: /inputs from the settings table (temperature, not targetTemperature; timeStep as
+    // given, the step used is /run/timeStep)
+    run.setAttribute("version", "sdf_dem 2");
     run.setAttribute("boxLength", r.boxLength);
     run.setAttribute("timeStep", r.timeStep);
     run.setAttribute("steps", std::int64_t(r.steps));

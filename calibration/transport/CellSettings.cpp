@@ -131,12 +131,34 @@ bool setCellSetting(CellRunSettings& settings, const std::string& name, const st
     {
         throw std::invalid_argument("entry '" + name + "': not a number: '" + text + "'");
     }
-    if (s->integer && (!std::isfinite(v) || v != std::floor(v)))
-    {
-        throw std::invalid_argument("entry '" + name + "': not a whole number: '" + text + "'");
-    }
+    checkCellSettingValue(*s, v);
     s->set(settings, v);
     return true;
+}
+
+
+void checkCellSettingValue(const CellSetting& setting, double v)
+{
+    const std::string entry = "entry '" + std::string(setting.name) + "': ";
+    if (!std::isfinite(v))
+    {
+        throw std::invalid_argument(entry + "not a finite number");
+    }
+    if (!setting.integer) return;
+    char buf[64];
+    std::snprintf(buf, sizeof buf, "%.17g", v);
+    if (v != std::floor(v))
+    {
+        throw std::invalid_argument(entry + "not a whole number: " + buf);
+    }
+    const double limit = std::string(setting.name) == "seed" ? 9007199254740992.0 : 2147483648.0;
+    if (v < 0 || v >= limit)
+    {
+        throw std::invalid_argument
+        (
+            entry + buf + " outside [0, " + (limit > 3e9 ? "2^53" : "2^31") + ")"
+        );
+    }
 }
 
 

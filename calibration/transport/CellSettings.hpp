@@ -47,8 +47,14 @@ const CellSetting* findCellSetting(const std::string& name);
 //- Names of the settings of one scope (the valid entries of a dictionary).
 std::vector<std::string> cellSettingNames(CellSetting::Scope scope);
 
+//- Throws std::invalid_argument naming the entry when v cannot be the setting's value:
+//  not finite, or for an integer setting not a whole number in [0, 2^31) (the seed:
+//  [0, 2^53), what a double holds exactly).
+void checkCellSettingValue(const CellSetting& setting, double v);
+
 //- Sets the setting `name` from text, refusing what is not a number (or, for an integer
-//  setting, not a whole number) with a message naming the entry. False: no such setting.
+//  setting, not a whole number in range) with a message naming the entry. False: no such
+//  setting.
 bool setCellSetting(CellRunSettings& settings, const std::string& name, const std::string& text);
 
 //- The value as text: integers as integers, reals with %.10g (the store's key format).
