@@ -71,6 +71,23 @@ std::vector<double> blockSlopes
     return slopes;
 }
 
+//- b - a of independent estimates, their errors in quadrature.
+Estimate difference(const Estimate& b, const Estimate& a)
+{
+    return
+    {
+        b.value - a.value,
+        std::hypot(b.standardError, a.standardError),
+        std::min(a.samples, b.samples)
+    };
+}
+
+//- |d| within `sigmas` of its standard errors plus `tolerance` (absolute).
+bool withinErrors(const Estimate& d, double sigmas, double tolerance)
+{
+    return std::abs(d.value) <= sigmas*d.standardError + tolerance;
+}
+
 std::string percent(const Estimate& change, double reference)
 {
     char buf[64];
@@ -90,12 +107,14 @@ DiffusiveRegimeCheck checkDiffusiveRegime
     const std::vector<double>& times,
     const std::vector<std::vector<double>>& blockMsd,
     const EinsteinWindow& window,
-    const Estimate& msd,
+    const EinsteinResult& einstein,
     const GreenKuboResult& greenKubo,
     double correlationTime,
     const DiffusiveRegimeSettings& settings
 )
 {
+    const Estimate& msd = einstein.diffusivity;
+    const double tolerance = settings.slopeTolerance*std::abs(msd.value);
     if (blockMsd.size() < 2)
     {
         throw std::invalid_argument("checkDiffusiveRegime: needs >= 2 blocks or replicas");
@@ -137,47 +156,27 @@ DiffusiveRegimeCheck checkDiffusiveRegime
         check.earlySlope = meanAndStandardError(early);
         check.lateSlope = meanAndStandardError(late);
         check.slopeChange = meanAndStandardError(change);
-        check.slopeFlat =
-            std::abs(check.slopeChange.value)
-         <= settings.agreementSigmas*check.slopeChange.standardError
-          + settings.slopeTolerance*std::abs(msd.value);
+        check.slopeFlat = withinErrors(check.slopeChange, settings.agreementSigmas, tolerance);
     }
 
-    // stationarity: D over the window, later half of the blocks against the earlier
+    // stationarity: D over the window (the Einstein fit's per-block values), later half
+    // of the blocks against the earlier; not checked with fewer than 4 blocks
+    const std::vector<double>& perBlock = einstein.blockDiffusivities;
+    const std::size_t half = perBlock.size()/2;
+    check.stationary = half < 2;
+    if (half >= 2)
     {
-        const std::vector<double> perBlock = blockSlopes
+        check.drift = difference
         (
-            times, blockMsd, window.fitStart, window.fitEnd, window.dimensions
+            meanAndStandardError(std::vector<double>(perBlock.end() - half, perBlock.end())),
+            meanAndStandardError(std::vector<double>(perBlock.begin(), perBlock.begin() + half))
         );
-        const std::size_t half = perBlock.size()/2;
-        check.stationary = half < 2;   // not checked with fewer than 4 blocks
-        if (half >= 2)
-        {
-            const Estimate earlier = meanAndStandardError
-            (
-                std::vector<double>(perBlock.begin(), perBlock.begin() + half)
-            );
-            const Estimate later = meanAndStandardError
-            (
-                std::vector<double>(perBlock.end() - half, perBlock.end())
-            );
-            check.drift.value = later.value - earlier.value;
-            check.drift.standardError = std::hypot(later.standardError, earlier.standardError);
-            check.drift.samples = perBlock.size();
-            check.stationary =
-                std::abs(check.drift.value)
-             <= settings.agreementSigmas*check.drift.standardError
-              + settings.slopeTolerance*std::abs(msd.value);
-        }
+        check.drift.samples = perBlock.size();
+        check.stationary = withinErrors(check.drift, settings.agreementSigmas, tolerance);
     }
 
-    const Estimate& gk = greenKubo.integral;
-    check.greenKuboMinusMsd.value = gk.value - msd.value;
-    check.greenKuboMinusMsd.standardError = std::hypot(gk.standardError, msd.standardError);
-    check.greenKuboMinusMsd.samples = std::min(gk.samples, msd.samples);
-    check.greenKuboAgrees =
-        std::abs(check.greenKuboMinusMsd.value)
-     <= settings.agreementSigmas*check.greenKuboMinusMsd.standardError;
+    check.greenKuboMinusMsd = difference(greenKubo.integral, msd);
+    check.greenKuboAgrees = withinErrors(check.greenKuboMinusMsd, settings.agreementSigmas, 0);
     return check;
 }
 

@@ -109,15 +109,16 @@ struct DiffusiveRegimeCheck
 };
 
 //- blockMsd as for einsteinDiffusivity (one series per block, `window.dimensions`
-//  components summed); msd = einsteinDiffusivity's result over the same window;
-//  correlationTime the tau_v the window was made from. Stationarity (item 5) needs
+//  components summed); einstein = einsteinDiffusivity's result over the same window
+//  (its per-block D serve the stationarity item); correlationTime the tau_v the window
+//  was made from. Stationarity (item 5) needs
 //  >= 4 blocks: with fewer it is not checked (drift.samples 0).
 DiffusiveRegimeCheck checkDiffusiveRegime
 (
     const std::vector<double>& times,
     const std::vector<std::vector<double>>& blockMsd,
     const EinsteinWindow& window,
-    const Estimate& msd,
+    const EinsteinResult& einstein,
     const GreenKuboResult& greenKubo,
     double correlationTime,
     const DiffusiveRegimeSettings& settings = DiffusiveRegimeSettings()

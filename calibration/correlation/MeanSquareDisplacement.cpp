@@ -144,6 +144,7 @@ EinsteinResult einsteinDiffusivity
         }
     }
     result.diffusivity = meanAndStandardError(perBlock);
+    result.blockDiffusivities = perBlock;
     result.fitOfMean = fitEinsteinSlope(times, result.meanMsd, window);
     return result;
 }

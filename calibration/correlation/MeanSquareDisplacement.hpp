@@ -74,6 +74,8 @@ struct EinsteinResult
     //- Mean over blocks of each block's fitted D, with the standard error
     //  from their scatter (the honest one).
     Estimate diffusivity;
+    //- Each block's fitted D, in block order (what diffusivity is the mean of).
+    std::vector<double> blockDiffusivities;
     //- Fit of the block-mean MSD (same value, shows the fit quality).
     EinsteinFit fitOfMean;
     std::vector<double> meanMsd;

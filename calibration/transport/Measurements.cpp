@@ -346,7 +346,7 @@ void MeanSquareDisplacementMeasurement::finish(CellRunResult& result, long) cons
         st.diffusivityMsd = einstein.diffusivity;
         st.diffusiveRegime = correlation::checkDiffusiveRegime
         (
-            times, series, window, einstein.diffusivity, st.greenKubo, tauV
+            times, series, window, einstein, st.greenKubo, tauV
         );
         st.msdTimes = times;
         st.msd = einstein.meanMsd;

@@ -49,7 +49,7 @@ DiffusiveRegimeCheck measure
         for (Eigen::Index k = 0; k < b.rows(); ++k) msd.back()[k] = b.row(k).sum();
     }
     einstein = einsteinDiffusivity(times, msd, window);
-    return checkDiffusiveRegime(times, msd, window, einstein.diffusivity, gk, tauV);
+    return checkDiffusiveRegime(times, msd, window, einstein, gk, tauV);
 }
 
 } // namespace

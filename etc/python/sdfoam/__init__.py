@@ -10,6 +10,8 @@ On the path through etc/bashrc (PYTHONPATH=<project>/etc/python).
                          python3 -m sdfoam.fieldStats CASE CHECK ...
   sdfoam.ziffMcGrady     the exact breakage solution of Ziff & McGrady (1985)
                          and its fixed-pivot class numbers (breakage checks)
+  sdfoam.calibrationLog  counts of calibrateGranularMixture's conditions that
+                         failed the diffusive-regime check
   sdfoam.syntheticField  write a field from an expression of the cell centre
                          (to test the checks without the solver);
                          python3 -m sdfoam.syntheticField --case DIR ...
