@@ -117,12 +117,48 @@ void writeCoefficient(std::ostream& os, const CalibratedCoefficient& entry)
     os << "}\n\n";
 }
 
+const std::string in1 = "    ";
+
+void writePhiLaw(std::ostream& os, const std::string& name, const PhiPowerLaw& law)
+{
+    if (!law.fitted)
+    {
+        return;
+    }
+    os << in1 << key(name) << "{ A " << law.A << "; AError " << law.AError
+       << "; b " << law.b << "; bError " << law.bError << "; reducedChi2 "
+       << law.reducedChiSquare << "; }\n";
+}
+
+void writeShearScaling(std::ostream& os, const ShearScaling& s)
+{
+    os << "// Sheared calibration (Lees-Edwards cells, T measured): the fines' D across\n"
+          "// the shear in units of gammaDot dMean^2, and R = dMean gammaDot sqrt(3/T).\n"
+          "// C: diffusivity { model shearRate; shearRateCoeffs { C ..; } } (Fan et al.\n"
+          "// 2014 found 0.042); R: granularTemperature { model savageJeffrey;\n"
+          "// savageJeffreyCoeffs { R ..; } }. *PhiLaw: y = A phi^b.\n";
+    os << "shearScaling\n{\n";
+    os << in1 << key("C") << s.meanC.value << ";\n";
+    os << in1 << key("CError") << s.meanC.error << ";\n";
+    os << in1 << key("CReducedChi2") << s.meanC.reducedChiSquare << ";\n";
+    writePhiLaw(os, "CPhiLaw", s.CLaw);
+    os << in1 << key("R") << s.meanR << ";\n";
+    os << in1 << key("RSpread") << s.spreadR << ";\n";
+    writePhiLaw(os, "RPhiLaw", s.RLaw);
+    os << in1 << key("points") << s.C.size() << ";\n";
+    os << in1 << key("phiRange") << range(s.phi) << ";\n";
+    os << in1 << key("xRange") << range(s.x) << ";\n";
+    os << in1 << key("gammaDotRange") << range(s.gammaDot) << ";\n";
+    os << "}\n\n";
+}
+
 } // namespace
 
 void writeOpenFOAMDictionary
 (
     std::ostream& os,
-    const std::vector<CalibratedCoefficient>& coefficients
+    const std::vector<CalibratedCoefficient>& coefficients,
+    const ShearScaling* shear
 )
 {
     if (coefficients.empty())
@@ -171,6 +207,10 @@ void writeOpenFOAMDictionary
     for (const CalibratedCoefficient& c : coefficients)
     {
         writeCoefficient(text, c);
+    }
+    if (shear)
+    {
+        writeShearScaling(text, *shear);
     }
     text << "// ************************************************************************* //\n";
     os << text.str();

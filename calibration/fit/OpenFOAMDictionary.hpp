@@ -6,6 +6,7 @@
 
 #include "fit/LeastSquares.hpp"
 #include "fit/ModelSelection.hpp"
+#include "fit/ShearScaling.hpp"
 
 #include <optional>
 #include <ostream>
@@ -25,14 +26,19 @@ struct CalibratedCoefficient
     std::optional<ModelSelection> selection;
 };
 
-//- Writes the FoamFile header and one sub-dictionary per coefficient.
+//- Writes the FoamFile header and one sub-dictionary per coefficient, and for
+//  a sheared calibration (shear not null) the sub-dictionary shearScaling: the
+//  mean C = D/(gammaDot dMean^2) of the fines (the solver's shearRate
+//  diffusivity), the mean Savage-Jeffrey R (its savageJeffrey temperature) and
+//  their power laws in phi, with errors and envelope.
 //  Throws std::invalid_argument for an empty list, a coefficient name that is
 //  not an OpenFOAM word or appears twice, and FitFailure for a fit that did
 //  not converge (a failed fit is never written as if good).
 void writeOpenFOAMDictionary
 (
     std::ostream& os,
-    const std::vector<CalibratedCoefficient>& coefficients
+    const std::vector<CalibratedCoefficient>& coefficients,
+    const ShearScaling* shear = nullptr
 );
 
 } // namespace sdf::fit

@@ -265,6 +265,14 @@ std::string conditionName(double phi, double x, double T, std::int64_t seed)
 }
 
 
+std::string shearedConditionName(double phi, double x, double gammaDot, std::int64_t seed)
+{
+    return
+        "phi" + fmt6(phi) + "_x" + fmt6(x) + "_gammaDot" + fmt6(gammaDot)
+      + "_seed" + std::to_string(seed);
+}
+
+
 std::string settingsKey(const dem::CellRunSettings& b, const std::string& contactModel)
 {
     const dem::SimulationSettings& sim = b.simulation;
@@ -343,13 +351,24 @@ void appendCondition
         // inputs
         g.setAttribute("phi", cond.phi);
         g.setAttribute("x", cond.x);
-        g.setAttribute("targetT", cond.targetT);
+        if (cond.gammaDot)
+        {
+            g.setAttribute("gammaDot", *cond.gammaDot);
+        }
+        else
+        {
+            g.setAttribute("targetT", cond.targetT);
+        }
         g.setAttribute("seed", cond.seed);
         g.setAttribute("particles", std::int64_t(r.settings.particles));
         g.setAttribute("settingsKey", key);
         // results
         g.setAttribute("T", r.temperature);
         g.setAttribute("TError", r.temperatureError);
+        if (cond.gammaDot)
+        {
+            g.setAttribute("savageJeffreyR", r.savageJeffreyR);
+        }
         g.setAttribute("equilibrated", std::int64_t(r.equilibrated ? 1 : 0));
         g.setAttribute("equilibrationTime", r.equilibrationTime);
         g.setAttribute("timeStep", r.timeStep);
@@ -445,7 +464,15 @@ StoreContents readStore(const std::string& path)
             c.name = name;
             c.phi = g.readDouble("phi");
             c.x = g.readDouble("x");
-            c.targetT = g.readDouble("targetT");
+            if (g.hasAttribute("gammaDot"))
+            {
+                c.gammaDot = g.readDouble("gammaDot");
+                c.savageJeffreyR = optionalDouble(g, "savageJeffreyR");
+            }
+            else
+            {
+                c.targetT = g.readDouble("targetT");
+            }
             c.T = g.readDouble("T");
             c.fine = readSpecies(g.openGroup("species/" + contents.fineSpecies));
             const std::string coarse = "species/" + contents.coarseSpecies;

@@ -7,9 +7,11 @@
 //   /                        attributes format, formatVersion (sdf::io),
 //                            content = contentName, fineSpecies, coarseSpecies
 //   /conditions/<name>       one group per condition, <name> = conditionName()
-//                            attributes phi x targetT seed particles settingsKey
+//                            attributes phi x seed particles settingsKey and
+//                            targetT (driven cells) or gammaDot (sheared cells)
 //                            (inputs), T TError equilibrated equilibrationTime
-//                            timeStep boxLength steps (results)
+//                            timeStep boxLength steps, savageJeffreyR (sheared
+//                            cells) (results)
 //   /conditions/<name>/species/<species>
 //                            role (fine | coarse), d, count, T, D, DError,
 //                            DPlateauFound, DMsd, DMsdError, eta, etaError
@@ -101,6 +103,9 @@ void checkIsStore(const io::Group& root);
 //- Group name of a condition, e.g. phi0.3_x0.4_T0.01_seed1 (%.6g values).
 std::string conditionName(double phi, double x, double T, std::int64_t seed);
 
+//- Group name of a sheared condition, e.g. phi0.5_x0.4_gammaDot20_seed1.
+std::string shearedConditionName(double phi, double x, double gammaDot, std::int64_t seed);
+
 //- Fingerprint of the DEM settings (everything but the condition): a stored
 //  condition is reused only if it was run with the same settings.
 std::string settingsKey(const dem::CellRunSettings& settings, const std::string& contactModel);
@@ -111,7 +116,8 @@ struct ConditionInputs
     std::string name;
     double phi = 0;
     double x = 0;
-    double targetT = 0;
+    double targetT = 0;                  // driven cells (gammaDot absent)
+    std::optional<double> gammaDot;      // sheared cells [1/s] (targetT unused)
     std::int64_t seed = 0;
 };
 
@@ -202,8 +208,11 @@ struct ConditionRecord
     std::string name;
     double phi = 0;
     double x = 0;
-    double targetT = 0;
+    double targetT = 0;               // driven cells; 0 in sheared ones
+    std::optional<double> gammaDot;   // sheared cells: the imposed shear rate [1/s]
     double T = 0;                     // measured
+    //- Sheared cells: d_mean gammaDot sqrt(3/T) (the seed's eq 7 solved for R)
+    std::optional<double> savageJeffreyR;
     SpeciesRecord fine;
     SpeciesRecord coarse;
     //- Absent in conditions stored before the collisions were (their settings key is
@@ -220,7 +229,7 @@ struct StoreContents
 };
 
 //- Reads the whole store. Throws StoreError (file named) if it is missing,
-//  not a calibration store, or a condition lacks phi, x, targetT, T or the
+//  not a calibration store, or a condition lacks phi, x, targetT (or gammaDot), T or the
 //  fine species' D.
 StoreContents readStore(const std::string& path);
 

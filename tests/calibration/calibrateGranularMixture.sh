@@ -87,7 +87,7 @@ test_calibration_resume()
 test_calibration_bad_input()
 {
     local dir="$workRoot/calibrationBad" kind
-    local kinds="unknownCoefficient unknownLaw emptyPhi invertedT jammedPhi negativeT xOutside textStore foreignHdf5 shearedMode pairUnknownSpecies pairSetsNothing pairRestitution"
+    local kinds="unknownCoefficient unknownLaw emptyPhi invertedT jammedPhi negativeT xOutside textStore foreignHdf5 nveMode shearedWithT shearedNoGammaDot drivenWithGammaDot strainWithTime drivenWithStrain shearedGammaDotZero pairUnknownSpecies pairSetsNothing pairRestitution"
     [ -f "$workRoot/calibration/constant/calibration.h5" ] && kinds="$kinds truncatedStore settingsChanged drivingChanged"
     for kind in $kinds
     do
@@ -106,7 +106,19 @@ test_calibration_bad_input()
             settingsChanged) cp "$workRoot/calibration/constant/calibration.h5" "$dir/constant/"
                 foamDictionary -entry phi -set "(0.2 0.35 0.5)" "$d" > /dev/null
                 foamDictionary -entry particles -set 300 "$d" > /dev/null; expect="other DEM settings" ;;
-            shearedMode) foamDictionary -entry mode -set leesEdwards "$d" > /dev/null; expect="stochastic" ;;
+            nveMode) foamDictionary -entry mode -set nve "$d" > /dev/null; expect="valid: thermostatted" ;;
+            shearedWithT) foamDictionary -entry mode -set leesEdwards "$d" > /dev/null; expect="Entry 'T' does not apply with mode leesEdwards" ;;
+            shearedNoGammaDot) foamDictionary -entry mode -set leesEdwards "$d" > /dev/null
+                foamDictionary -entry T -remove "$d" > /dev/null; expect="'gammaDot'" ;;
+            drivenWithGammaDot) foamDictionary -entry gammaDot -set "(10 20)" "$d" > /dev/null; expect="Entry 'gammaDot' does not apply with mode thermostatted" ;;
+            strainWithTime) foamDictionary -entry mode -set leesEdwards "$d" > /dev/null
+                foamDictionary -entry T -remove "$d" > /dev/null
+                foamDictionary -entry gammaDot -set "(10 20)" "$d" > /dev/null
+                foamDictionary -entry samplingStrain -set 10 "$d" > /dev/null; expect="Entry 'equilibrationTime' given with run lengths in strain" ;;
+            drivenWithStrain) foamDictionary -entry samplingStrain -set 10 "$d" > /dev/null; expect="run lengths of sheared cells" ;;
+            shearedGammaDotZero) foamDictionary -entry mode -set leesEdwards "$d" > /dev/null
+                foamDictionary -entry T -remove "$d" > /dev/null
+                foamDictionary -entry gammaDot -set "(0 20)" "$d" > /dev/null; expect="'gammaDot' (shear rate" ;;
             pairUnknownSpecies) foamDictionary -entry contact/pairs -set "{ glassSand { species (fine sand); restitution 0.7; } }" "$d" > /dev/null
                 expect="unknown species 'sand'; valid: fine coarse" ;;
             pairSetsNothing) foamDictionary -entry contact/pairs -set "{ fineCoarse { species (fine coarse); } }" "$d" > /dev/null
@@ -134,6 +146,71 @@ test_calibration_bad_input()
             [ "$(md5sum < "$dir/constant/calibration.h5")" = "$before" ] || { echo "calibration.h5 modified"; return 1; }
         fi
     done
+}
+
+# A sheared calibration (mode leesEdwards, 4 small Lees-Edwards cells at
+# phi 0.5, run lengths in strain): the store holds gammaDot and R per
+# condition, granularCoefficients the T-law of D with its gammaDotRange and
+# the shearScaling dictionary; C = D/(gammaDot dMean^2) and R recomputed here
+# from the store agree with what the utility wrote, and lie within a factor
+# of 3 of Fan et al.'s 0.042 and within (1, 3) (the seed assumed R = 1)
+test_calibration_sheared()
+{
+    local dir="$workRoot/calibrationSheared"
+    copy_calibration_case "$dir"
+    local d="$dir/system/calibrationDict"
+    foamDictionary -entry mode -set leesEdwards "$d" > /dev/null
+    foamDictionary -entry T -remove "$d" > /dev/null
+    foamDictionary -entry gammaDot -set "(20 40)" "$d" > /dev/null
+    foamDictionary -entry phi -set "(0.5)" "$d" > /dev/null
+    foamDictionary -entry laws -set "(kineticTheoryGroups)" "$d" > /dev/null   # 2 parameters for 4 rows
+    for e in equilibrationTime maxEquilibrationTime samplingTime
+    do
+        foamDictionary -entry "$e" -remove "$d" > /dev/null
+    done
+    foamDictionary -entry equilibrationStrain -set 1 "$d" > /dev/null
+    foamDictionary -entry samplingStrain -set 8 "$d" > /dev/null
+    local start=$SECONDS
+    calibrateGranularMixture -case "$dir" > "$dir/log" 2>&1 || { tail -30 "$dir/log"; return 1; }
+    echo "sheared calibration of 4 conditions: $((SECONDS - start)) s"
+    grep -E "^  C = |^  R = " "$dir/log"
+    local h5="$dir/constant/calibration.h5" coeffs="$dir/constant/granularCoefficients"
+    h5ls "$h5/conditions" | grep -q "^phi0.5_x0.4_gammaDot40_seed1 " || { echo "sheared condition not stored by name"; h5ls "$h5/conditions"; return 1; }
+    foamDictionary -entry D/gammaDotRange -value "$coeffs" | grep -q "( *20 40 *)" || { echo "no gammaDotRange in D"; return 1; }
+    local C R
+    C=$(foamDictionary -entry shearScaling/C -value "$coeffs") || return 1
+    R=$(foamDictionary -entry shearScaling/R -value "$coeffs") || return 1
+    # recompute from the store: per condition D of the fines, T, gammaDot, x
+    local rows
+    rows=$(for g in $(h5ls "$h5/conditions" | awk '{print $1}')
+    do
+        h5dump -a "/conditions/$g/gammaDot" -a "/conditions/$g/x" -a "/conditions/$g/T" \
+            -a "/conditions/$g/species/fine/D" -a "/conditions/$g/species/fine/DError" -m "%.17g" "$h5" \
+            | awk '/\(0\):/ { printf "%s ", $2 } END { print "" }'
+    done)
+    echo "store rows (gammaDot x T D DError):"; echo "$rows"
+    python3 - "$C" "$R" "$dir/postProcessing/calibration/shearScaling.dat" <<PY || return 1
+import sys, math
+C, R = float(sys.argv[1]), float(sys.argv[2])
+store = sorted(tuple(map(float, l.split())) for l in """$rows""".strip().splitlines())
+dat = sorted(tuple(map(float, l.split())) for l in open(sys.argv[3]) if not l.startswith("#"))
+assert len(store) == 4 and len(dat) == 4, (store, dat)
+sw = swc = 0.0; Rs = []
+for (g, x, T, D, DE), (phi, xd, gd, Td, Dd, DEd, c, ce, r, notDiffusive) in zip(sorted(store, key=lambda s: (s[1], s[0])), sorted(dat, key=lambda d: (d[1], d[2]))):
+    dm = (1 - x)*1e-3 + x*2e-3
+    # the file's rows are the store's values (its error raised where the
+    # diffusive-regime check failed)
+    assert (gd, xd) == (g, x) and abs(Dd - D) <= 1e-7*D and abs(Td - T) <= 1e-7*T, (g, x, D, Dd)
+    assert abs(c - D/(gd*dm*dm)) <= 1e-6*c and abs(ce - DEd/(gd*dm*dm)) <= 1e-6*ce
+    assert DEd >= DE*(1 - 1e-7) and (notDiffusive or abs(DEd - DE) <= 1e-7*DE)
+    sw += 1/ce**2; swc += c/ce**2
+    Rs.append(dm*g*math.sqrt(3/T))
+Cs, Rm = swc/sw, sum(Rs)/len(Rs)
+print("recomputed from the store: C = %.6g (written %.6g), R = %.6g (written %.6g)" % (Cs, C, Rm, R))
+ok = abs(Cs - C) <= 1e-6*C and abs(Rm - R) <= 1e-6*R and 0.042/3 < C < 3*0.042 and 1 < R < 3
+sys.exit(0 if ok else 1)
+PY
+    [ "$(grep -vc '^#' "$dir/postProcessing/calibration/shearScaling.dat")" -eq 4 ] || { echo "shearScaling.dat lacks rows"; return 1; }
 }
 
 # A fit that does not converge is reported naming the law, and

@@ -8,7 +8,8 @@
 # (cells below phiMin ignored, phi clipped to 0.6, T log-spaced), a named
 # time with uniform fields gives a one-point envelope and runs it, the
 # coefficients follow the mechanisms switched on, nothing to calibrate
-# stops cleanly, a missing T is a FatalError naming T and writeFields
+# stops cleanly, a missing T is a FatalError naming T and writeFields; the
+# same with the gammaDot field for a sheared calibration
 test_calibration_from_case()
 {
     local dir="$workRoot/calibrationFromCase" log
@@ -118,6 +119,32 @@ test_calibration_from_case()
         grep -q "done in" "$log" && { echo "DEM ran"; return 1; }
         [ ! -e "$dir/constant/calibration.h5" ] || { echo "calibration.h5 written"; return 1; }
     done
+
+    # sheared calibration (mode leesEdwards): the envelope's third axis is the
+    # gammaDot field (log-spaced above minGammaDotRatio times its largest
+    # value); its absence is a FatalError naming gammaDot and writeFields
+    fresh_from_case
+    sed 's/object T;/object gammaDot;/; s/\[0 2 -2 0 0 0 0\]/[0 0 -1 0 0 0 0]/; s/5(0.004 0.04 10 0.01 0.001)/5(2 50 1e3 0.5 0.01)/' \
+        "$dir/2/T" > "$dir/2/gammaDot"
+    foamDictionary -entry T -remove "$dir/system/calibrationDict" > /dev/null
+    foamDictionary -entry mode -set leesEdwards "$dir/system/calibrationDict" > /dev/null
+    foamDictionary -entry fromCase/minGammaDotRatio -set 0.1 "$dir/system/calibrationDict" > /dev/null
+    log="$dir/log.sheared"
+    calibrateGranularMixture -case "$dir" -fromCase -dryRun > "$log" 2>&1 || { tail -20 "$log"; return 1; }
+    # cells holding material: gammaDot 2, 50, 0.5, 0.01 -> clipped at 0.1 x 50
+    expect_lines "$log" \
+        "-fromCase gammaDot: case range [0.01, 50], clipped [5, 50] -> (5 15.81 50)" \
+        "(3 phi x 3 x x 3 gammaDot x 1 replicas, sheared cells (Lees-Edwards))" \
+        "27 of 27 conditions would run" || return 1
+    echo "sheared: $(grep -- "-fromCase gammaDot" "$log")"
+    rm "$dir/2/gammaDot"
+    log="$dir/log.noGammaDot"
+    if calibrateGranularMixture -case "$dir" -fromCase > "$log" 2>&1
+    then
+        echo "missing gammaDot accepted"; return 1
+    fi
+    expect_lines "$log" "FOAM FATAL" "field gammaDot is missing" "2/gammaDot" "writeFields (gammaDot" || return 1
+    echo "missing gammaDot: $(grep -A1 "FOAM FATAL" "$log" | sed -n 2p)"
 
     # T missing from the case but given in calibrationDict: that list is used
     fresh_from_case

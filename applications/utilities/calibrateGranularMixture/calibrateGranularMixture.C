@@ -14,7 +14,8 @@ Group
 Description
     Calibration workflow of a binary mixture: runs the embedded periodic DEM
     engine (calibration/dem) over an envelope of conditions (solids fraction
-    phi, coarse fraction x, granular temperature T, replicas), stores every
+    phi, coarse fraction x, granular temperature T or, with mode leesEdwards,
+    shear rate gammaDot, replicas), stores every
     finished condition at once in constant/calibration.h5 (a rerun skips the
     stored ones), fits constitutive laws (calibration/fit) to the diffusivity
     of the fines (D), the kinetic sieving coefficient of the coarse (eta)
@@ -26,7 +27,7 @@ Description
     Species (d, rho) come from constant/granularProperties (exactly two: the
     smaller is the fine species); the rest from system/calibrationDict
     (entries: calibrationSettings.H). The units of the utility:
-    - caseEnvelope       -fromCase [time]: the envelope (phi, x, T over the
+    - caseEnvelope       -fromCase [time]: the envelope (phi, x, T or gammaDot over the
                          cells with phi >= phiMin) from the case's fields and
                          the coefficients from the mechanisms granularProperties
                          switches on
@@ -95,12 +96,14 @@ int main(int argc, char *argv[])
         )
     );
 
+    const calibrationSettings settings(dict, species[0], species[1]);
+
     std::optional<caseEnvelope> fromCase;
     if (args.found("fromCase"))
     {
         fromCase = deriveEnvelope
         (
-            runTime, properties, species, dict, args.get<word>("fromCase")
+            runTime, properties, settings, args.get<word>("fromCase")
         );
         if (fromCase->coefficients.empty())
         {
@@ -113,15 +116,11 @@ int main(int argc, char *argv[])
         }
     }
 
-    const calibrationSettings settings(dict, species[0], species[1]);
-
     calibrationSettings::envelopeAxes envelope;
     wordList coefficients(settings.coefficients());
     if (fromCase)
     {
-        envelope.phi = fromCase->phi;
-        envelope.x = fromCase->x;
-        envelope.T = fromCase->T;
+        envelope = fromCase->axes;
         coefficients = fromCase->coefficients;
     }
     else
@@ -141,7 +140,7 @@ int main(int argc, char *argv[])
         {
             sdf::dem::validateCellRunSettings
             (
-                settings.conditionSettings(c.phi, c.x, c.T, c.seed, c.name)
+                settings.conditionSettings(c.phi, c.x, c.rate(), c.seed, c.name)
             );
         }
         catch (const std::exception& err)
@@ -172,8 +171,11 @@ int main(int argc, char *argv[])
         << settings.fine().d << ") / " << settings.coarse().name
         << " (coarse, d = " << settings.coarse().d << "): "
         << label(conds.size()) << " conditions (" << envelope.phi.size()
-        << " phi x " << envelope.x.size() << " x x " << envelope.T.size()
-        << " T x " << settings.replicas().size() << " replicas), store " << h5
+        << " phi x " << envelope.x.size() << " x x " << envelope.rates().size()
+        << " " << settings.rateName() << " x " << settings.replicas().size()
+        << " replicas"
+        << (settings.sheared() ? ", sheared cells (Lees-Edwards)" : "")
+        << "), store " << h5
         << nl << endl;
 
     // A stored condition is reused only if run with the same DEM settings
@@ -194,8 +196,8 @@ int main(int argc, char *argv[])
             if (!s) ++toRun;
         }
         Info<< "Envelope: phi " << listText(envelope.phi).c_str() << ", x "
-            << listText(envelope.x).c_str() << ", T "
-            << listText(envelope.T).c_str() << ", coefficients (";
+            << listText(envelope.x).c_str() << ", " << settings.rateName()
+            << " " << listText(envelope.rates()).c_str() << ", coefficients (";
         for (const word& c : coefficients)
         {
             Info<< (&c == &coefficients.first() ? "" : " ") << c;
@@ -218,9 +220,8 @@ int main(int argc, char *argv[])
         if (isStored[i])
         {
             Info<< "skipping condition " << i + 1 << "/" << label(conds.size())
-                << " (phi " << fmt(c.phi).c_str() << " x " << fmt(c.x).c_str()
-                << " T " << fmt(c.T).c_str() << " seed " << c.seed
-                << ") (already in calibration.h5)" << endl;
+                << " (" << c.text().c_str() << ") (already in calibration.h5)"
+                << endl;
         }
         else
         {

@@ -173,11 +173,11 @@ Foam::caseEnvelope Foam::deriveEnvelope
 (
     const Time& runTime,
     const dictionary& properties,
-    const FixedList<granularSpecies, 2>& species,
-    const dictionary& dict,
+    const calibrationSettings& settings,
     const word& timeArg
 )
 {
+    const dictionary& dict = settings.dict();
     caseEnvelope env;
     const fileName caseDir(runTime.globalPath());
 
@@ -216,7 +216,10 @@ Foam::caseEnvelope Foam::deriveEnvelope
 
     // Options
     const dictionary& opts = dict.subOrEmptyDict("fromCase");
-    modelCoeffs::checkKeys(opts, wordList({"points", "minTRatio"}));
+    modelCoeffs::checkKeys
+    (
+        opts, wordList({"points", "minTRatio", "minGammaDotRatio"})
+    );
     const label points = opts.getOrDefault<label>("points", 3);
     if (points < 1)
     {
@@ -224,18 +227,29 @@ Foam::caseEnvelope Foam::deriveEnvelope
             << "Entry 'fromCase/points' " << points << ": give the number of"
             << " values per envelope axis, >= 1" << nl << exit(FatalIOError);
     }
-    const scalar minTRatio = opts.getOrDefault<scalar>("minTRatio", 1e-3);
-    if (!(minTRatio > 0 && minTRatio <= 1))
+    // The drive: T of driven cells, or gammaDot of sheared ones (its field
+    // written by the solver's writeFields); both span decades in a silo
+    const word rate(settings.rateName());
+    const word ratioKey(settings.sheared() ? "minGammaDotRatio" : "minTRatio");
+    const string rateMeaning
+    (
+        settings.sheared()
+      ? "shear rate of the bulk flow [1/s]"
+      : "granular temperature [m2/s2], sum of 3 components"
+    );
+    const scalar minRatio = opts.getOrDefault<scalar>(ratioKey, 1e-3);
+    if (!(minRatio > 0 && minRatio <= 1))
     {
         FatalIOErrorInFunction(opts)
-            << "Entry 'fromCase/minTRatio' " << minTRatio << " is outside"
-            << " (0, 1]: the smallest T calibrated, as a fraction of the"
-            << " largest T of the case" << nl << exit(FatalIOError);
+            << "Entry 'fromCase/" << ratioKey << "' " << minRatio
+            << " is outside (0, 1]: the smallest " << rate << " calibrated,"
+            << " as a fraction of the largest " << rate << " of the case"
+            << nl << exit(FatalIOError);
     }
 
     // Species: the fine is the smaller diameter
-    const word& fine = species[0].name;
-    const word& coarse = species[1].name;
+    const word& fine = settings.fine().name;
+    const word& coarse = settings.coarse().name;
     const scalar phiMin = granularMixture::readPhiMin(properties);
 
     // Time: the latest of the case (or of its processor directories when
@@ -298,33 +312,35 @@ Foam::caseEnvelope Foam::deriveEnvelope
         }
     }
 
-    const bool haveT = isFile(sources[0]/"T");
-    if (!haveT && !dict.found("T"))
+    const bool haveRate = isFile(sources[0]/rate);
+    if (!haveRate && !dict.found(rate))
     {
         FatalErrorInFunction
-            << "-fromCase: the granular temperature field T is missing: no"
-            << " file " << sources[0]/"T" << nl
-            << "    The solver writes T when constant/granularProperties has"
-            << " 'writeFields (T ...);' (and a granularTemperature model):"
-            << " add T to writeFields and rerun the solver to time " << time
-            << ", or give the temperatures as 'T (..);' in"
-            << " system/calibrationDict" << nl << exit(FatalError);
+            << "-fromCase: the field " << rate << " is missing ("
+            << rateMeaning.c_str() << "): no file " << sources[0]/rate << nl
+            << "    The solver writes " << rate << " when"
+            << " constant/granularProperties has 'writeFields (" << rate
+            << " ...);'"
+            << (settings.sheared() ? "" : " (and a granularTemperature model)")
+            << ": add " << rate << " to writeFields and rerun the solver to"
+            << " time " << time << ", or give the values as '" << rate
+            << " (..);' in system/calibrationDict" << nl << exit(FatalError);
     }
 
     scalar phiLo = GREAT, phiHi = -GREAT;
     scalar xLo = GREAT, xHi = -GREAT;
-    scalar TLo = GREAT, THi = -GREAT;
+    scalar rateLo = GREAT, rateHi = -GREAT;
     label cells = 0, material = 0;
     for (const fileName& dir : sources)
     {
         const CellValues nFine(readCellValues(dir/("n." + fine), runTime));
         const CellValues nCoarse(readCellValues(dir/("n." + coarse), runTime));
-        const CellValues T
+        const CellValues rateValues
         (
-            haveT ? readCellValues(dir/"T", runTime) : CellValues()
+            haveRate ? readCellValues(dir/rate, runTime) : CellValues()
         );
         label n = 1;
-        for (const CellValues* f : {&nFine, &nCoarse, &T})
+        for (const CellValues* f : {&nFine, &nCoarse, &rateValues})
         {
             if (!f->uniform)
             {
@@ -352,10 +368,10 @@ Foam::caseEnvelope Foam::deriveEnvelope
             phiHi = max(phiHi, phi);
             xLo = min(xLo, x);
             xHi = max(xHi, x);
-            if (haveT && T[celli] > 0)
+            if (haveRate && rateValues[celli] > 0)
             {
-                TLo = min(TLo, T[celli]);
-                THi = max(THi, T[celli]);
+                rateLo = min(rateLo, rateValues[celli]);
+                rateHi = max(rateHi, rateValues[celli]);
             }
         }
     }
@@ -380,46 +396,49 @@ Foam::caseEnvelope Foam::deriveEnvelope
             << nl;
     };
 
+    calibrationSettings::envelopeAxes& axes = env.axes;
     const scalar phiCLo = min(phiLo, fromCasePhiMax);
     const scalar phiCHi = min(phiHi, fromCasePhiMax);
-    env.phi = envelopeValues(phiCLo, phiCHi, points, false);
-    report("phi", phiLo, phiHi, phiCLo, phiCHi, env.phi);
+    axes.phi = envelopeValues(phiCLo, phiCHi, points, false);
+    report("phi", phiLo, phiHi, phiCLo, phiCHi, axes.phi);
 
     const scalar xCLo = min(max(xLo, fromCaseXMin), fromCaseXMax);
     const scalar xCHi = min(max(xHi, fromCaseXMin), fromCaseXMax);
-    env.x = envelopeValues(xCLo, xCHi, points, false);
-    report("x", xLo, xHi, xCLo, xCHi, env.x);
+    axes.x = envelopeValues(xCLo, xCHi, points, false);
+    report("x", xLo, xHi, xCLo, xCHi, axes.x);
 
-    if (haveT)
+    scalarList& rates = settings.sheared() ? axes.gammaDot : axes.T;
+    if (haveRate)
     {
-        if (!(THi > 0))
+        if (!(rateHi > 0))
         {
             FatalErrorInFunction
-                << "-fromCase: T is zero in every cell holding material at"
-                << " time " << time << ": a static case, no granular"
-                << " temperature to calibrate at; give 'T (..);' in"
+                << "-fromCase: " << rate << " is zero in every cell holding"
+                << " material at time " << time << ": a static case, nothing"
+                << " to calibrate at; give '" << rate << " (..);' in"
                 << " system/calibrationDict" << nl << exit(FatalError);
         }
-        // T spans many decades in a silo (nearly static zones): calibrate
-        // above minTRatio times the largest T; the calibrated models'
-        // outsideEnvelope decides below it
-        const scalar TCLo = max(TLo, minTRatio*THi);
-        env.T = envelopeValues(TCLo, THi, points, true);
-        report("T", TLo, THi, TCLo, THi, env.T);
+        // The drive spans many decades in a silo (nearly static zones):
+        // calibrate above minRatio times its largest value; the calibrated
+        // models' outsideEnvelope decides below it
+        const scalar rateCLo = max(rateLo, minRatio*rateHi);
+        rates = envelopeValues(rateCLo, rateHi, points, true);
+        report(rate.c_str(), rateLo, rateHi, rateCLo, rateHi, rates);
     }
     else
     {
-        env.T = calibrationSettings::readEnvelopeList
+        settings.checkRateAxis(dict);
+        rates = calibrationSettings::readEnvelopeList
         (
-            dict, "T", 0, 1e301, "granular temperature [m2/s2], sum of 3 components"
+            dict, rate, 0, 1e301, rateMeaning
         );
-        Info<< "-fromCase T: no field T at time " << time << ", the T list"
-            << " of system/calibrationDict is used: " << listText(env.T).c_str()
-            << nl;
+        Info<< "-fromCase " << rate << ": no field " << rate << " at time "
+            << time << ", the " << rate << " list of system/calibrationDict"
+            << " is used: " << listText(rates).c_str() << nl;
     }
-    for (const word& key : wordList({"phi", "x", "T", "coefficients"}))
+    for (const word& key : wordList({"phi", "x", rate, "coefficients"}))
     {
-        if (dict.found(key) && !(key == "T" && !haveT))
+        if (dict.found(key) && !(key == rate && !haveRate))
         {
             Info<< "-fromCase: entry '" << key.c_str() << "' of "
                 << dict.name() << " is overridden by the case" << nl;

@@ -40,24 +40,63 @@ struct FinishedCondition
 } // End anonymous namespace
 
 
+std::string Foam::calibrationCondition::text() const
+{
+    return
+        "phi " + fmt(phi) + " x " + fmt(x)
+      + (sheared() ? " gammaDot " + fmt(gammaDot) : " T " + fmt(T))
+      + " seed " + std::to_string(seed);
+}
+
+
+sdf::store::ConditionInputs Foam::calibrationCondition::inputs() const
+{
+    sdf::store::ConditionInputs in;
+    in.name = name;
+    in.phi = phi;
+    in.x = x;
+    in.seed = seed;
+    if (sheared())
+    {
+        in.gammaDot = gammaDot;
+    }
+    else
+    {
+        in.targetT = T;
+    }
+    return in;
+}
+
+
 std::vector<Foam::calibrationCondition> Foam::envelopeConditions
 (
     const calibrationSettings::envelopeAxes& envelope,
     const labelList& replicas
 )
 {
+    const bool sheared = !envelope.gammaDot.empty();
     std::vector<calibrationCondition> conds;
     for (const scalar phi : envelope.phi)
     {
         for (const scalar x : envelope.x)
         {
-            for (const scalar T : envelope.T)
+            for (const scalar rate : envelope.rates())
             {
                 for (const label seed : replicas)
                 {
                     conds.push_back
                     (
-                        {phi, x, T, seed, sdf::store::conditionName(phi, x, T, seed)}
+                        sheared
+                      ? calibrationCondition
+                        {
+                            phi, x, 0, rate, seed,
+                            sdf::store::shearedConditionName(phi, x, rate, seed)
+                        }
+                      : calibrationCondition
+                        {
+                            phi, x, rate, 0, seed,
+                            sdf::store::conditionName(phi, x, rate, seed)
+                        }
                     );
                 }
             }
@@ -159,7 +198,7 @@ Foam::label Foam::runConditions
                 const calibrationCondition& c = conds[f.index];
                 f.result = sdf::dem::runCell
                 (
-                    settings.conditionSettings(c.phi, c.x, c.T, c.seed, c.name)
+                    settings.conditionSettings(c.phi, c.x, c.rate(), c.seed, c.name)
                 );
             }
             catch (const std::exception& err)
@@ -209,8 +248,7 @@ Foam::label Foam::runConditions
         const std::string where =
             "condition " + std::to_string(f.index + 1) + "/"
           + std::to_string(conds.size())
-          + " (phi " + fmt(c.phi) + " x " + fmt(c.x) + " T " + fmt(c.T)
-          + " seed " + std::to_string(c.seed) + ")";
+          + " (" + c.text() + ")";
         if (!f.error.empty())
         {
             stop = true;
@@ -226,7 +264,7 @@ Foam::label Foam::runConditions
             {
                 settings.appendToStore
                 (
-                    store, {c.name, c.phi, c.x, c.T, c.seed}, f.result
+                    store, c.inputs(), f.result
                 );
                 ++ran;
                 const double total = std::chrono::duration<double>
@@ -241,6 +279,12 @@ Foam::label Foam::runConditions
                     << " +- "
                     << fmt(r.species[0].greenKubo.integral.standardError).c_str()
                     << " m2/s"
+                    << (
+                           c.sheared()
+                         ? " (yy, across the shear), R = "
+                         + fmt(r.savageJeffreyR)
+                         : std::string()
+                       ).c_str()
                     << ")" << endl;
                 if (!r.species[0].diffusiveRegime.converged())
                 {

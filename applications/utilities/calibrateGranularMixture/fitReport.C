@@ -18,6 +18,7 @@
 #include "fit/OpenFOAMDictionary.hpp"
 #include "fit/SievingNormalisation.hpp"
 #include "fit/BreakageRate.hpp"
+#include "fit/ShearScaling.hpp"
 
 #include <cmath>
 #include <cstdlib>
@@ -588,6 +589,105 @@ void fitBreakage
     Info<< endl;
 }
 
+//- A sheared calibration's dimensionless groups (fit/ShearScaling.hpp):
+//  C = D/(gammaDot dMean^2) of the fines against the Lueptow group's 0.042
+//  and R = dMean gammaDot sqrt(3/T) against the seed's R = 1, per condition
+//  and summarised; written to postProcessing/calibration/shearScaling.dat
+sdf::fit::ShearScaling reportShearScaling
+(
+    const Time& runTime,
+    const std::vector<StoredResult>& results,
+    const calibrationSettings& settings
+)
+{
+    // The closure of Fan et al. (2014), J. Fluid Mech. 741, 252 (bounded
+    // heap DEM), used by Schlick et al. (2015) and the shearRate model
+    constexpr scalar lueptowC = 0.042;
+
+    std::vector<sdf::fit::ShearedObservation> rows;
+    for (const StoredResult& r : results)
+    {
+        sdf::fit::ShearedObservation o;
+        o.phi = r.cond.phi;
+        o.x = r.cond.x;
+        o.gammaDot = r.cond.gammaDot;
+        o.T = r.T;
+        o.dMean = sdf::fit::volumeMeanDiameter
+        (
+            r.cond.x, settings.fine().d, settings.coarse().d
+        );
+        o.D = r.D;
+        o.DError = r.DError;
+        rows.push_back(o);
+    }
+    sdf::fit::ShearScaling s;
+    try
+    {
+        s = sdf::fit::shearScaling(rows);
+    }
+    catch (const std::exception& err)
+    {
+        FatalErrorInFunction
+            << "The sheared conditions' dimensionless groups: " << err.what()
+            << nl << "    constant/granularCoefficients is not written." << nl
+            << exit(FatalError);
+    }
+
+    const fileName dir(runTime.globalPath()/"postProcessing"/"calibration");
+    mkDir(dir);
+    const fileName dat(dir/"shearScaling.dat");
+    {
+        std::ofstream os(dat);
+        os << "# Sheared calibration: fines' D across the shear (yy) in units of"
+           << " gammaDot dMean^2, and R = dMean gammaDot sqrt(3/T)\n"
+           << "# phi x gammaDot[1/s] T[m2/s2] D[m2/s] DError[m2/s] C CError R"
+           << " notDiffusive\n";
+        for (std::size_t i = 0; i < rows.size(); ++i)
+        {
+            const sdf::fit::ShearedObservation& o = rows[i];
+            os << std::setprecision(8) << o.phi << " " << o.x << " "
+               << o.gammaDot << " " << o.T << " " << o.D << " " << o.DError
+               << " " << s.C[i] << " " << s.CError[i] << " " << s.R[i] << " "
+               << (results[i].DNotConverged ? 1 : 0) << "\n";
+        }
+    }
+
+    Info<< "Sheared cells: D of " << settings.fine().name << " across the shear"
+        << " in units of gammaDot dMean^2 (C) and R = dMean gammaDot sqrt(3/T):"
+        << nl;
+    for (std::size_t i = 0; i < rows.size(); ++i)
+    {
+        Info<< "    " << results[i].cond.text().c_str() << ": C = "
+            << fmt(s.C[i]).c_str() << " +- " << fmt(s.CError[i]).c_str()
+            << ", R = " << fmt(s.R[i]).c_str()
+            << (results[i].DNotConverged ? " (D not diffusive)" : "") << nl;
+    }
+    Info<< "  C = " << fmt(s.meanC.value).c_str() << " +- "
+        << fmt(s.meanC.error).c_str() << " (weighted mean, reduced chi2 "
+        << fmt(s.meanC.reducedChiSquare).c_str() << "): "
+        << fmt(s.meanC.value/lueptowC).c_str() << " x the closure 0.042 of"
+        << " Fan et al. 2014 (" << fmt((s.meanC.value - lueptowC)/s.meanC.error).c_str()
+        << " errors)" << nl;
+    if (s.CLaw.fitted)
+    {
+        Info<< "  C = A phi^b: A = " << fmt(s.CLaw.A).c_str() << " +- "
+            << fmt(s.CLaw.AError).c_str() << ", b = " << fmt(s.CLaw.b).c_str()
+            << " +- " << fmt(s.CLaw.bError).c_str() << " (reduced chi2 "
+            << fmt(s.CLaw.reducedChiSquare).c_str() << ")" << nl;
+    }
+    Info<< "  R = " << fmt(s.meanR).c_str() << " (spread "
+        << fmt(s.spreadR).c_str() << " over the conditions; the seed assumed"
+        << " R = 1)";
+    if (s.RLaw.fitted)
+    {
+        Info<< "; R = A phi^b: A = " << fmt(s.RLaw.A).c_str() << " +- "
+            << fmt(s.RLaw.AError).c_str() << ", b = " << fmt(s.RLaw.b).c_str()
+            << " +- " << fmt(s.RLaw.bError).c_str();
+    }
+    Info<< nl << "Written " << dat << nl << endl;
+    return s;
+}
+
 } // End anonymous namespace
 
 
@@ -631,6 +731,10 @@ void Foam::fitAndReport
             o.condition.phi = r.cond.phi;
             o.condition.x = r.cond.x;
             o.condition.T = r.T;
+            if (r.cond.sheared())
+            {
+                o.condition.gammaDot = r.cond.gammaDot;
+            }
             o.condition.d = (isD ? settings.fine() : settings.coarse()).d;
             o.value = isD ? r.D : r.eta;
             o.sigma = isD ? r.DError : r.etaError;
@@ -660,10 +764,19 @@ void Foam::fitAndReport
         calibrated.push_back(chosen);
     }
 
+    std::optional<sdf::fit::ShearScaling> shear;
+    if (settings.sheared() && coefficients.found("D"))
+    {
+        shear = reportShearScaling(runTime, results, settings);
+    }
+
     std::ostringstream text;
     try
     {
-        sdf::fit::writeOpenFOAMDictionary(text, calibrated);
+        sdf::fit::writeOpenFOAMDictionary
+        (
+            text, calibrated, shear ? &*shear : nullptr
+        );
     }
     catch (const std::exception& err)
     {

@@ -66,7 +66,24 @@ inline dem::CellRunResult syntheticResult(double scale = 1)
 
 inline ConditionInputs inputs(double phi, double x, double T, std::int64_t seed)
 {
-    return {conditionName(phi, x, T, seed), phi, x, T, seed};
+    ConditionInputs in;
+    in.name = conditionName(phi, x, T, seed);
+    in.phi = phi;
+    in.x = x;
+    in.targetT = T;
+    in.seed = seed;
+    return in;
+}
+
+inline ConditionInputs shearedInputs(double phi, double x, double gammaDot, std::int64_t seed)
+{
+    ConditionInputs in;
+    in.name = shearedConditionName(phi, x, gammaDot, seed);
+    in.phi = phi;
+    in.x = x;
+    in.gammaDot = gammaDot;
+    in.seed = seed;
+    return in;
 }
 
 } // namespace sdf::store::test

@@ -15,6 +15,7 @@
 using namespace sdf::store;
 using sdf::io::test::TemporaryDirectory;
 using sdf::store::test::inputs;
+using sdf::store::test::shearedInputs;
 using sdf::store::test::syntheticResult;
 
 namespace
@@ -50,6 +51,41 @@ TEST(store, conditionNamesUseSixSignificantDigits)
 {
     EXPECT_EQ(conditionName(0.3, 0.4, 0.01, 1), "phi0.3_x0.4_T0.01_seed1");
     EXPECT_EQ(conditionName(0.123456789, 0.5, 1e-4, 12), "phi0.123457_x0.5_T0.0001_seed12");
+}
+
+
+TEST(store, shearedConditionsCarryTheirShearRateAndR)
+{
+    EXPECT_EQ(shearedConditionName(0.5, 0.4, 20, 1), "phi0.5_x0.4_gammaDot20_seed1");
+
+    const TemporaryDirectory dir;
+    const std::string h5 = dir.file("calibration.h5");
+    sdf::dem::CellRunResult r = syntheticResult();
+    r.savageJeffreyR = 1.7;
+    const std::string key = settingsKey(r.settings, "linearSpringDashpot");
+    appendCondition(h5, "small", "large", key, shearedInputs(0.5, 0.4, 20, 1), r);
+    appendCondition(h5, "small", "large", key, inputs(0.5, 0.4, 0.01, 1), r);
+
+    const StoreContents contents = readStore(h5);
+    ASSERT_EQ(contents.conditions.size(), 2u);
+    const ConditionRecord& driven = contents.conditions[0];    // sorted by name: _T before _g
+    const ConditionRecord& sheared = contents.conditions[1];
+    EXPECT_EQ(sheared.name, "phi0.5_x0.4_gammaDot20_seed1");
+    ASSERT_TRUE(sheared.gammaDot);
+    EXPECT_EQ(*sheared.gammaDot, 20.0);
+    ASSERT_TRUE(sheared.savageJeffreyR);
+    EXPECT_EQ(*sheared.savageJeffreyR, 1.7);
+    EXPECT_EQ(sheared.targetT, 0.0);
+    EXPECT_EQ(sheared.T, r.temperature);
+    // a driven condition has no shear rate and no R
+    EXPECT_FALSE(driven.gammaDot);
+    EXPECT_FALSE(driven.savageJeffreyR);
+    EXPECT_EQ(driven.targetT, 0.01);
+    // the layout: gammaDot instead of targetT
+    const sdf::io::File f = sdf::io::File::openReadOnly(h5);
+    const sdf::io::Group g = f.root().openGroup("conditions/" + sheared.name);
+    EXPECT_TRUE(g.hasAttribute("gammaDot"));
+    EXPECT_FALSE(g.hasAttribute("targetT"));
 }
 
 

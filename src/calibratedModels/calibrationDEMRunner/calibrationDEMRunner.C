@@ -135,6 +135,15 @@ Foam::calibrationDEMRunner::calibrationDEMRunner
     coarse.d = mixture.d(coarsei);
     coarse.rho = mixture.rho(coarsei);
     settings_.reset(new calibrationSettings(dict, fine, coarse));
+    if (settings_->sheared())
+    {
+        FatalIOErrorInFunction(dict)
+            << "outsideEnvelope runDEM extends a table of driven cells on its"
+            << " T grid; " << dict.objectPath() << " has 'mode leesEdwards;'"
+            << " (sheared cells, T measured). Use mode thermostatted or"
+            << " stochastic for runDEM, or a sheared calibration's fitted"
+            << " laws (mode law)" << nl << exit(FatalIOError);
+    }
 
     Info<< "    calibrated: outside the grid, runDEM with the DEM settings of "
         << dict.objectPath() << " (" << settings_->base().particles
@@ -195,7 +204,13 @@ Foam::label Foam::calibrationDEMRunner::runCondition
         // condition
         try
         {
-            settings.appendToStore(file_, {name, phi, x, T, seed}, r);
+            sdf::store::ConditionInputs inputs;
+            inputs.name = name;
+            inputs.phi = phi;
+            inputs.x = x;
+            inputs.targetT = T;
+            inputs.seed = seed;
+            settings.appendToStore(file_, inputs, r);
         }
         catch (const std::exception& err)
         {

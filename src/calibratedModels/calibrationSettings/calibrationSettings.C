@@ -49,10 +49,11 @@ namespace
 
 const Foam::wordList validEntries
 ({
-    "phi", "x", "T", "replicas", "coefficients", "laws", "etaLaws",
+    "phi", "x", "T", "gammaDot", "replicas", "coefficients", "laws", "etaLaws",
     "collisionFrequencyLaws", "impactEnergyLaws",
     "etaDiameterPower", "fitMaxIterations",
-    "particles", "mode", "plot", "concurrentConditions", "fromCase"
+    "particles", "mode", "plot", "concurrentConditions", "fromCase",
+    "equilibrationStrain", "maxEquilibrationStrain", "samplingStrain"
 });
 
 
@@ -203,7 +204,10 @@ Foam::calibrationSettings::calibrationSettings
     etaDiameterPower_(1),
     fitMaxIterations_(2000),
     plot_(true),
-    concurrentConditions_(0)
+    concurrentConditions_(0),
+    equilibrationStrain_(0),
+    maxEquilibrationStrain_(0),
+    samplingStrain_(0)
 {
     const dictionary& dict = dict_;
     wordList valid(validEntries);
@@ -293,16 +297,30 @@ Foam::calibrationSettings::calibrationSettings
     };
     b.particles = dict.getOrDefault<label>("particles", 1000);
     const word mode(dict.getOrDefault<word>("mode", "thermostatted"));
-    if (mode != "thermostatted" && mode != "stochastic")
+    if (mode != "thermostatted" && mode != "stochastic" && mode != "leesEdwards")
     {
         FatalIOErrorInFunction(dict)
-            << "Entry 'mode' " << mode << ": the calibration runs driven"
-            << " homogeneous cells; valid: thermostatted (velocity rescaling),"
-            << " stochastic (random kicks per particle)" << nl
-            << exit(FatalIOError);
+            << "Entry 'mode' " << mode << ": valid: thermostatted (velocity"
+            << " rescaling), stochastic (random kicks per particle), both"
+            << " homogeneous cells at the envelope's temperatures T;"
+            << " leesEdwards (simple shear at the envelope's shear rates"
+            << " gammaDot, T measured)" << nl << exit(FatalIOError);
     }
     b.simulation.mode = sdf::dem::cellModeFromName(mode);
-    demDictionary::readRunControls(dict, b);
+    checkRateAxis(dict);
+    readStrains(dict);
+    if (samplingStrain_ > 0 && !dict.found("samplingTime"))
+    {
+        // The run controls require samplingTime; with samplingStrain it is
+        // set per condition (conditionSettings), this value is never run
+        dictionary runControls(dict);
+        runControls.add("samplingTime", samplingStrain_);
+        demDictionary::readRunControls(runControls, b);
+    }
+    else
+    {
+        demDictionary::readRunControls(dict, b);
+    }
     b.progressEvery = 0;
 
     settingsKey_ = sdf::store::settingsKey
@@ -311,6 +329,77 @@ Foam::calibrationSettings::calibrationSettings
         dict.subOrEmptyDict("contact")
             .getOrDefault<word>("model", "linearSpringDashpot")
     );
+    if (samplingStrain_ > 0)
+    {
+        // The times of the key are placeholders then: the strains decide
+        settingsKey_ +=
+            " equilibrationStrain " + fmt(equilibrationStrain_)
+          + " maxEquilibrationStrain " + fmt(maxEquilibrationStrain_)
+          + " samplingStrain " + fmt(samplingStrain_);
+    }
+}
+
+
+// * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+void Foam::calibrationSettings::readStrains(const dictionary& dict)
+{
+    const wordList strainKeys
+    ({
+        "equilibrationStrain", "maxEquilibrationStrain", "samplingStrain"
+    });
+    const wordList timeKeys
+    ({
+        "equilibrationTime", "maxEquilibrationTime", "samplingTime"
+    });
+    bool anyStrain = false;
+    for (const word& k : strainKeys) anyStrain = anyStrain || dict.found(k);
+    if (!anyStrain)
+    {
+        return;
+    }
+    if (!sheared())
+    {
+        FatalIOErrorInFunction(dict)
+            << "Entries " << strainKeys << " are the run lengths of sheared"
+            << " cells (mode leesEdwards); a driven cell's are "
+            << timeKeys << nl << exit(FatalIOError);
+    }
+    // One unit for all run lengths: a time beside a strain would be
+    // overridden silently
+    for (const word& t : timeKeys)
+    {
+        if (dict.found(t))
+        {
+            FatalIOErrorInFunction(dict)
+                << "Entry '" << t << "' given with run lengths in strain: give"
+                << " the run lengths of the sheared cells all in strain ("
+                << strainKeys << ") or all in time (" << timeKeys << ")"
+                << nl << exit(FatalIOError);
+        }
+    }
+    samplingStrain_ = dict.get<scalar>("samplingStrain");
+    equilibrationStrain_ = dict.getOrDefault<scalar>("equilibrationStrain", 2);
+    maxEquilibrationStrain_ =
+        dict.getOrDefault<scalar>
+        (
+            "maxEquilibrationStrain", 2*equilibrationStrain_
+        );
+    if
+    (
+        !(samplingStrain_ > 0) || !(equilibrationStrain_ >= 0)
+     || !(maxEquilibrationStrain_ >= equilibrationStrain_)
+     || !std::isfinite(samplingStrain_)
+     || !std::isfinite(maxEquilibrationStrain_)
+    )
+    {
+        FatalIOErrorInFunction(dict)
+            << "Strains: samplingStrain " << samplingStrain_ << " must be"
+            << " > 0, equilibrationStrain " << equilibrationStrain_
+            << " >= 0 and maxEquilibrationStrain " << maxEquilibrationStrain_
+            << " >= equilibrationStrain (all finite)" << nl
+            << exit(FatalIOError);
+    }
 }
 
 
@@ -328,12 +417,51 @@ Foam::calibrationSettings::envelope() const
     (
         dict_, "x", 0, 1, "coarse fraction of the solids"
     );
-    axes.T = readEnvelopeList
-    (
-        dict_, "T", 0, 1e301,
-        "granular temperature [m2/s2], sum of 3 components"
-    );
+    checkRateAxis(dict_);
+    if (sheared())
+    {
+        axes.gammaDot = readEnvelopeList
+        (
+            dict_, "gammaDot", 0, 1e301, "shear rate of the sheared cells [1/s]"
+        );
+    }
+    else
+    {
+        axes.T = readEnvelopeList
+        (
+            dict_, "T", 0, 1e301,
+            "granular temperature [m2/s2], sum of 3 components"
+        );
+    }
     return axes;
+}
+
+
+bool Foam::calibrationSettings::sheared() const
+{
+    return base_.simulation.mode == sdf::dem::CellMode::leesEdwards;
+}
+
+
+void Foam::calibrationSettings::checkRateAxis(const dictionary& dict) const
+{
+    // The one axis the cells are driven along; the other is their output
+    const word axis(sheared() ? "gammaDot" : "T");
+    const word other(sheared() ? "T" : "gammaDot");
+    if (dict.found(other))
+    {
+        FatalIOErrorInFunction(dict)
+            << "Entry '" << other << "' does not apply with mode "
+            << sdf::dem::cellModeName(base_.simulation.mode).c_str() << ": "
+            << (
+                   sheared()
+                 ? "a sheared cell's granular temperature is measured, not"
+                   " set; give the shear rates as 'gammaDot (..);'"
+                 : "a driven cell is not sheared; give the temperatures as"
+                   " 'T (..);', or 'mode leesEdwards;' with 'gammaDot (..);'"
+               )
+            << nl << exit(FatalIOError);
+    }
 }
 
 
@@ -341,7 +469,7 @@ sdf::dem::CellRunSettings Foam::calibrationSettings::conditionSettings
 (
     const scalar phi,
     const scalar x,
-    const scalar T,
+    const scalar rate,
     const label seed,
     const std::string& name
 ) const
@@ -349,7 +477,20 @@ sdf::dem::CellRunSettings Foam::calibrationSettings::conditionSettings
     sdf::dem::CellRunSettings s = base_;
     s.volumeFractions = {1 - x, x};
     s.solidsFraction = phi;
-    s.simulation.targetTemperature = T;
+    if (sheared())
+    {
+        s.simulation.shearRate = rate;
+        if (samplingStrain_ > 0)
+        {
+            s.samplingTime = samplingStrain_/rate;
+            s.equilibrationTime = equilibrationStrain_/rate;
+            s.maxEquilibrationTime = maxEquilibrationStrain_/rate;
+        }
+    }
+    else
+    {
+        s.simulation.targetTemperature = rate;
+    }
     s.seed = seed;
     s.label = name;
     return s;

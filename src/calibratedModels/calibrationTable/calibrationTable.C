@@ -175,6 +175,18 @@ void Foam::calibrationTable::read()
 
         for (const sdf::store::ConditionRecord& record : contents.conditions)
         {
+            if (record.gammaDot)
+            {
+                // A sheared cell's T is an output: its conditions do not lie
+                // on a T grid the table could interpolate along
+                throw std::runtime_error
+                (
+                    "condition " + record.name + " is a sheared cell (gammaDot "
+                  + std::to_string(*record.gammaDot) + " 1/s): a sheared"
+                    " calibration is used through its fitted laws (mode law),"
+                    " not as a table"
+                );
+            }
             storedCondition c;
             c.name = record.name;
             c.phi = record.phi;

@@ -1,0 +1,161 @@
+#include "fit/ShearScaling.hpp"
+
+#include <gsl/gsl_fit.h>
+
+#include <algorithm>
+#include <cmath>
+#include <set>
+#include <stdexcept>
+#include <string>
+
+namespace sdf::fit
+{
+
+namespace
+{
+
+void check(bool ok, std::size_t row, const char* entry, double value, const char* what)
+{
+    if (!ok)
+    {
+        throw std::invalid_argument
+        (
+            "shear scaling: row " + std::to_string(row) + ", " + entry + " = "
+          + std::to_string(value) + " " + what
+        );
+    }
+}
+
+//- ln y = ln A + b ln phi, weights 1/sigma_ln^2 (sigma_ln = sigma/y)
+PhiPowerLaw phiPowerLaw
+(
+    const std::vector<double>& phi,
+    const std::vector<double>& y,
+    const std::vector<double>& sigma
+)
+{
+    PhiPowerLaw law;
+    const std::set<double> distinct(phi.begin(), phi.end());
+    if (phi.size() < 3 || distinct.size() < 2)
+    {
+        return law;
+    }
+    const std::size_t n = phi.size();
+    std::vector<double> lx(n), ly(n), w(n);
+    for (std::size_t i = 0; i < n; ++i)
+    {
+        lx[i] = std::log(phi[i]);
+        ly[i] = std::log(y[i]);
+        const double s = sigma[i]/y[i];
+        w[i] = 1.0/(s*s);
+    }
+    double c0, c1, cov00, cov01, cov11, chi2;
+    gsl_fit_wlinear(lx.data(), 1, w.data(), 1, ly.data(), 1, n, &c0, &c1, &cov00, &cov01, &cov11, &chi2);
+    law.reducedChiSquare = chi2/double(n - 2);
+    const double widen = std::max(1.0, std::sqrt(law.reducedChiSquare));
+    law.A = std::exp(c0);
+    law.AError = law.A*std::sqrt(cov00)*widen;
+    law.b = c1;
+    law.bError = std::sqrt(cov11)*widen;
+    law.fitted = true;
+    return law;
+}
+
+Range rangeOf(const std::vector<ShearedObservation>& rows, double ShearedObservation::*member)
+{
+    Range r{rows.front().*member, rows.front().*member};
+    for (const ShearedObservation& o : rows)
+    {
+        r.min = std::min(r.min, o.*member);
+        r.max = std::max(r.max, o.*member);
+    }
+    return r;
+}
+
+} // namespace
+
+
+double volumeMeanDiameter(double x, double dFine, double dCoarse)
+{
+    return (1.0 - x)*dFine + x*dCoarse;
+}
+
+
+ShearScaling shearScaling(const std::vector<ShearedObservation>& rows)
+{
+    if (rows.empty())
+    {
+        throw std::invalid_argument("shear scaling: no sheared conditions");
+    }
+    const std::size_t n = rows.size();
+    ShearScaling s;
+    std::vector<double> phi(n), unit(n);
+    for (std::size_t i = 0; i < n; ++i)
+    {
+        const ShearedObservation& o = rows[i];
+        for (const double v : {o.phi, o.x, o.gammaDot, o.T, o.dMean, o.D, o.DError})
+        {
+            check(std::isfinite(v), i, "value", v, "is not finite");
+        }
+        check(o.phi > 0 && o.phi < 1, i, "phi", o.phi, "must be in (0, 1)");
+        check(o.x >= 0 && o.x <= 1, i, "x", o.x, "must be in [0, 1]");
+        check(o.gammaDot > 0, i, "gammaDot", o.gammaDot, "must be > 0 [1/s]");
+        check(o.T > 0, i, "T", o.T, "must be > 0 [m2/s2]");
+        check(o.dMean > 0, i, "dMean", o.dMean, "must be > 0 [m]");
+        check(o.D > 0, i, "D", o.D, "must be > 0 [m2/s]");
+        check(o.DError > 0, i, "DError", o.DError, "must be > 0 [m2/s]");
+        const double scale = o.gammaDot*o.dMean*o.dMean;
+        s.C.push_back(o.D/scale);
+        s.CError.push_back(o.DError/scale);
+        s.R.push_back(o.dMean*o.gammaDot*std::sqrt(3.0/o.T));
+        phi[i] = o.phi;
+    }
+
+    // Weighted mean of C
+    double sw = 0, swc = 0;
+    for (std::size_t i = 0; i < n; ++i)
+    {
+        const double w = 1.0/(s.CError[i]*s.CError[i]);
+        sw += w;
+        swc += w*s.C[i];
+    }
+    s.meanC.value = swc/sw;
+    double chi2 = 0;
+    for (std::size_t i = 0; i < n; ++i)
+    {
+        const double r = (s.C[i] - s.meanC.value)/s.CError[i];
+        chi2 += r*r;
+    }
+    s.meanC.reducedChiSquare = n > 1 ? chi2/double(n - 1) : 0;
+    s.meanC.error = std::sqrt(1.0/sw)*std::max(1.0, std::sqrt(s.meanC.reducedChiSquare));
+    s.CLaw = phiPowerLaw(phi, s.C, s.CError);
+
+    // R: unweighted (the error of T is a fraction of a percent)
+    double sum = 0, sum2 = 0;
+    for (const double r : s.R)
+    {
+        sum += r;
+        sum2 += r*r;
+    }
+    s.meanR = sum/double(n);
+    s.spreadR = n > 1 ? std::sqrt(std::max(0.0, (sum2 - n*s.meanR*s.meanR)/double(n - 1))) : 0;
+    for (std::size_t i = 0; i < n; ++i)
+    {
+        unit[i] = s.R[i];   // unit relative weights: sigma_ln = 1
+    }
+    s.RLaw = phiPowerLaw(phi, s.R, unit);
+    if (s.RLaw.fitted)
+    {
+        // unit weights: the errors come from the scatter alone
+        const double scatter = std::sqrt(s.RLaw.reducedChiSquare);
+        s.RLaw.AError = s.RLaw.AError/std::max(1.0, scatter)*scatter;
+        s.RLaw.bError = s.RLaw.bError/std::max(1.0, scatter)*scatter;
+    }
+
+    s.phi = rangeOf(rows, &ShearedObservation::phi);
+    s.x = rangeOf(rows, &ShearedObservation::x);
+    s.gammaDot = rangeOf(rows, &ShearedObservation::gammaDot);
+    return s;
+}
+
+} // namespace sdf::fit
