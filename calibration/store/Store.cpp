@@ -273,6 +273,12 @@ std::string shearedConditionName(double phi, double x, double gammaDot, std::int
 }
 
 
+std::string sizedConditionName(const std::string& name, std::int64_t particles)
+{
+    return name + "_N" + std::to_string(particles);
+}
+
+
 std::string settingsKey(const dem::CellRunSettings& b, const std::string& contactModel)
 {
     const dem::SimulationSettings& sim = b.simulation;
@@ -474,6 +480,7 @@ StoreContents readStore(const std::string& path)
                 c.targetT = g.readDouble("targetT");
             }
             c.T = g.readDouble("T");
+            c.particles = g.readInt64("particles");
             c.fine = readSpecies(g.openGroup("species/" + contents.fineSpecies));
             const std::string coarse = "species/" + contents.coarseSpecies;
             if (g.hasGroup(coarse))

@@ -106,6 +106,10 @@ std::string conditionName(double phi, double x, double T, std::int64_t seed);
 //- Group name of a sheared condition, e.g. phi0.5_x0.4_gammaDot20_seed1.
 std::string shearedConditionName(double phi, double x, double gammaDot, std::int64_t seed);
 
+//- Group name of one cell size of a finite-size calibration: name + "_N<particles>",
+//  e.g. phi0.3_x0.4_T0.01_seed1_N300.
+std::string sizedConditionName(const std::string& name, std::int64_t particles);
+
 //- Fingerprint of the DEM settings (everything but the condition): a stored
 //  condition is reused only if it was run with the same settings.
 std::string settingsKey(const dem::CellRunSettings& settings, const std::string& contactModel);
@@ -211,6 +215,7 @@ struct ConditionRecord
     double targetT = 0;               // driven cells; 0 in sheared ones
     std::optional<double> gammaDot;   // sheared cells: the imposed shear rate [1/s]
     double T = 0;                     // measured
+    std::int64_t particles = 0;       // the cell's size
     //- Sheared cells: d_mean gammaDot sqrt(3/T) (the seed's eq 7 solved for R)
     std::optional<double> savageJeffreyR;
     SpeciesRecord fine;

@@ -87,7 +87,7 @@ test_calibration_resume()
 test_calibration_bad_input()
 {
     local dir="$workRoot/calibrationBad" kind
-    local kinds="unknownCoefficient unknownLaw emptyPhi invertedT jammedPhi negativeT xOutside textStore foreignHdf5 nveMode shearedWithT shearedNoGammaDot drivenWithGammaDot strainWithTime drivenWithStrain shearedGammaDotZero pairUnknownSpecies pairSetsNothing pairRestitution"
+    local kinds="unknownCoefficient unknownLaw emptyPhi invertedT jammedPhi negativeT xOutside textStore foreignHdf5 finiteSizeAndParticles finiteSizeOneSize finiteSizeOrder nveMode shearedWithT shearedNoGammaDot drivenWithGammaDot strainWithTime drivenWithStrain shearedGammaDotZero pairUnknownSpecies pairSetsNothing pairRestitution"
     [ -f "$workRoot/calibration/constant/calibration.h5" ] && kinds="$kinds truncatedStore settingsChanged drivingChanged"
     for kind in $kinds
     do
@@ -106,6 +106,11 @@ test_calibration_bad_input()
             settingsChanged) cp "$workRoot/calibration/constant/calibration.h5" "$dir/constant/"
                 foamDictionary -entry phi -set "(0.2 0.35 0.5)" "$d" > /dev/null
                 foamDictionary -entry particles -set 300 "$d" > /dev/null; expect="other DEM settings" ;;
+            finiteSizeAndParticles) foamDictionary -entry finiteSize -set "{ particles (100 200); }" "$d" > /dev/null; expect="'particles' and 'finiteSize' both given" ;;
+            finiteSizeOneSize) foamDictionary -entry particles -remove "$d" > /dev/null
+                foamDictionary -entry finiteSize -set "{ particles (200); }" "$d" > /dev/null; expect="at least two cell sizes" ;;
+            finiteSizeOrder) foamDictionary -entry particles -remove "$d" > /dev/null
+                foamDictionary -entry finiteSize -set "{ particles (200 100); }" "$d" > /dev/null; expect="from the smallest to the largest" ;;
             nveMode) foamDictionary -entry mode -set nve "$d" > /dev/null; expect="valid: thermostatted" ;;
             shearedWithT) foamDictionary -entry mode -set leesEdwards "$d" > /dev/null; expect="Entry 'T' does not apply with mode leesEdwards" ;;
             shearedNoGammaDot) foamDictionary -entry mode -set leesEdwards "$d" > /dev/null
@@ -211,6 +216,56 @@ ok = abs(Cs - C) <= 1e-6*C and abs(Rm - R) <= 1e-6*R and 0.042/3 < C < 3*0.042 a
 sys.exit(0 if ok else 1)
 PY
     [ "$(grep -vc '^#' "$dir/postProcessing/calibration/shearScaling.dat")" -eq 4 ] || { echo "shearScaling.dat lacks rows"; return 1; }
+}
+
+# A finite-size calibration (finiteSize { particles (100 200); }): every
+# condition runs at both sizes (store groups <name>_N100, _N200), D of the
+# fines is extrapolated to the infinite cell, D(N) = D_inf - a N^(-1/3): the
+# two-point formula recomputed here from the store gives finiteSize.dat's
+# D_inf, and the fit's data (D_x0.2.dat) are those D_inf
+test_calibration_finite_size()
+{
+    local dir="$workRoot/calibrationFiniteSize"
+    copy_calibration_case "$dir"
+    local d="$dir/system/calibrationDict"
+    foamDictionary -entry particles -remove "$d" > /dev/null
+    foamDictionary -entry finiteSize -set "{ particles (100 200); }" "$d" > /dev/null
+    calibrateGranularMixture -case "$dir" > "$dir/log" 2>&1 || { tail -30 "$dir/log"; return 1; }
+    grep -A3 "^Finite size" "$dir/log"
+    local h5="$dir/constant/calibration.h5"
+    [ "$(h5ls "$h5/conditions" | grep -c "_N100 ")" -eq 8 ] && [ "$(h5ls "$h5/conditions" | grep -c "_N200 ")" -eq 8 ] \
+        || { echo "not 8 conditions per size"; h5ls "$h5/conditions"; return 1; }
+    local rows
+    rows=$(for g in $(h5ls "$h5/conditions" | awk '{print $1}')
+    do
+        printf "%s " "$g"
+        h5dump -a "/conditions/$g/particles" -a "/conditions/$g/species/fine/D" -a "/conditions/$g/species/fine/DError" \
+            -m "%.17g" "$h5" | awk '/\(0\):/ { printf "%s ", $2 } END { print "" }'
+    done)
+    python3 - "$dir/postProcessing/calibration/finiteSize.dat" "$dir/postProcessing/calibration/D_x0.2.dat" <<PY || return 1
+import sys, math
+cells = {}
+for l in """$rows""".strip().splitlines():
+    name, n, D, DE = l.split()
+    cells.setdefault(name.rsplit("_N", 1)[0], {})[int(n)] = (float(D), float(DE))
+fs = {l.split()[0]: list(map(float, l.split()[1:])) for l in open(sys.argv[1]) if not l.startswith("#")}
+assert len(fs) == 8, fs
+u1, u2 = 100**(-1/3), 200**(-1/3)
+for point, v in fs.items():
+    (n1, D1, e1, n2, D2, e2, Dinf, err) = v[:8]
+    assert (n1, n2) == (100, 200), v
+    # the file's cells are the store's (errors raised where the check failed)
+    assert abs(D1 - cells[point][100][0]) <= 1e-7*D1 and abs(D2 - cells[point][200][0]) <= 1e-7*D2
+    assert e1 >= cells[point][100][1]*(1 - 1e-7) and e2 >= cells[point][200][1]*(1 - 1e-7)
+    want = (D2*u1 - D1*u2)/(u1 - u2)
+    wantErr = math.sqrt(u1**2*e2**2 + u2**2*e1**2)/(u1 - u2)
+    assert abs(Dinf - want) <= 1e-6*abs(want) and abs(err - wantErr) <= 1e-6*wantErr, (point, Dinf, want, err, wantErr)
+# the plot's (and the fit's) data are the extrapolated values
+plotted = sorted(float(l.split()[1]) for l in open(sys.argv[2]) if l.strip() and not l.startswith("#"))
+expected = sorted(v[6] for p, v in fs.items() if "_x0.2_" in p)
+assert len(plotted) == 4 and all(abs(a - b) <= 1e-7*abs(b) for a, b in zip(plotted, expected)), (plotted, expected)
+print("D_inf of 8 points: two-point formula reproduced, plotted and fitted")
+PY
 }
 
 # A fit that does not converge is reported naming the law, and

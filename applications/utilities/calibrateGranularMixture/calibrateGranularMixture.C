@@ -130,7 +130,10 @@ int main(int argc, char *argv[])
 
     const std::vector<calibrationCondition> conds
     (
-        envelopeConditions(envelope, settings.replicas())
+        envelopeConditions
+        (
+            envelope, settings.replicas(), settings.finiteSizeParticles()
+        )
     );
 
     // Check every condition's DEM settings before running anything
@@ -140,7 +143,10 @@ int main(int argc, char *argv[])
         {
             sdf::dem::validateCellRunSettings
             (
-                settings.conditionSettings(c.phi, c.x, c.rate(), c.seed, c.name)
+                settings.conditionSettings
+                (
+                    c.phi, c.x, c.rate(), c.seed, c.name, c.particles
+                )
             );
         }
         catch (const std::exception& err)
@@ -184,7 +190,7 @@ int main(int argc, char *argv[])
     {
         isStored[i] = calibrationStore::isStored
         (
-            h5, stored, conds[i].name, settings.settingsKey()
+            h5, stored, conds[i].name, settings.settingsKey(conds[i].particles)
         );
     }
 

@@ -45,7 +45,8 @@ std::string Foam::calibrationCondition::text() const
     return
         "phi " + fmt(phi) + " x " + fmt(x)
       + (sheared() ? " gammaDot " + fmt(gammaDot) : " T " + fmt(T))
-      + " seed " + std::to_string(seed);
+      + " seed " + std::to_string(seed)
+      + (particles > 0 ? " N " + std::to_string(particles) : std::string());
 }
 
 
@@ -71,10 +72,13 @@ sdf::store::ConditionInputs Foam::calibrationCondition::inputs() const
 std::vector<Foam::calibrationCondition> Foam::envelopeConditions
 (
     const calibrationSettings::envelopeAxes& envelope,
-    const labelList& replicas
+    const labelList& replicas,
+    const labelList& particles
 )
 {
     const bool sheared = !envelope.gammaDot.empty();
+    // One cell size (0: the settings') unless finiteSize gives several
+    const labelList sizes(particles.empty() ? labelList({0}) : particles);
     std::vector<calibrationCondition> conds;
     for (const scalar phi : envelope.phi)
     {
@@ -84,20 +88,26 @@ std::vector<Foam::calibrationCondition> Foam::envelopeConditions
             {
                 for (const label seed : replicas)
                 {
-                    conds.push_back
-                    (
+                    const std::string point =
                         sheared
-                      ? calibrationCondition
-                        {
-                            phi, x, 0, rate, seed,
-                            sdf::store::shearedConditionName(phi, x, rate, seed)
-                        }
-                      : calibrationCondition
-                        {
-                            phi, x, rate, 0, seed,
-                            sdf::store::conditionName(phi, x, rate, seed)
-                        }
-                    );
+                      ? sdf::store::shearedConditionName(phi, x, rate, seed)
+                      : sdf::store::conditionName(phi, x, rate, seed);
+                    for (const label n : sizes)
+                    {
+                        calibrationCondition c;
+                        c.phi = phi;
+                        c.x = x;
+                        c.T = sheared ? 0 : rate;
+                        c.gammaDot = sheared ? rate : 0;
+                        c.seed = seed;
+                        c.particles = n;
+                        c.pointName = point;
+                        c.name =
+                            n > 0
+                          ? sdf::store::sizedConditionName(point, n)
+                          : point;
+                        conds.push_back(c);
+                    }
                 }
             }
         }
@@ -198,7 +208,10 @@ Foam::label Foam::runConditions
                 const calibrationCondition& c = conds[f.index];
                 f.result = sdf::dem::runCell
                 (
-                    settings.conditionSettings(c.phi, c.x, c.rate(), c.seed, c.name)
+                    settings.conditionSettings
+                    (
+                        c.phi, c.x, c.rate(), c.seed, c.name, c.particles
+                    )
                 );
             }
             catch (const std::exception& err)

@@ -19,6 +19,7 @@
 #include "fit/SievingNormalisation.hpp"
 #include "fit/BreakageRate.hpp"
 #include "fit/ShearScaling.hpp"
+#include "fit/FiniteSize.hpp"
 
 #include <cmath>
 #include <cstdlib>
@@ -76,6 +77,11 @@ struct StoredResult
 
     //- 0: fine, 1: coarse
     SpeciesImpacts impacts[2];
+
+    //- A finite-size calibration: D and DError above are the infinite
+    //  cell's, extrapolated from these cells (smallest first)
+    std::optional<sdf::fit::FiniteSizeExtrapolation> finiteSize;
+    std::vector<StoredResult> cells;
 };
 
 
@@ -174,6 +180,116 @@ void readImpacts
 }
 
 
+//- The result of one stored cell (condition c, its record in the store)
+StoredResult storedResultOf
+(
+    const calibrationCondition& c,
+    const sdf::store::ConditionRecord& record,
+    const calibrationSettings& settings
+)
+{
+    if (!record.fine.DError)
+    {
+        throw std::runtime_error
+        (
+            "condition " + c.name + " has no DError of the fines"
+        );
+    }
+    StoredResult r;
+    r.cond = c;
+    r.T = record.T;
+    r.D = record.fine.D;
+    r.DError = *record.fine.DError;
+    if (record.fine.DConverged && !*record.fine.DConverged)
+    {
+        // Weighted down, not dropped: the disagreements that failed
+        // the check (Green-Kubo - MSD, the MSD slope's change over its
+        // window, the drift of D over the run) and, for a window that
+        // starts before the VACF's decay, the deficit of an
+        // exponential VACF there, D exp(-t_start/tau_v), are added to
+        // the error in quadrature, so a condition whose lags were too
+        // short counts as what it is, an estimate with a systematic
+        // error of that size (docs/user/calibration.md)
+        const sdf::store::SpeciesRecord& f = record.fine;
+        const scalar gkMinusMsd = f.DMsd ? r.D - *f.DMsd : r.D;
+        const scalar truncation =
+            !f.DWindowPastDecay && f.DCorrelationTime > 0
+          ? r.D*std::exp(-f.DFitStart/f.DCorrelationTime)
+          : 0;
+        r.DNotConverged = true;
+        r.DVerdict = f.DVerdict;
+        r.DError = std::sqrt
+        (
+            sqr(r.DError) + sqr(gkMinusMsd) + sqr(f.DSlopeChange)
+          + sqr(f.DDrift) + sqr(truncation)
+        );
+        Info<< "    condition " << c.name.c_str()
+            << ": D of the fines not in the diffusive regime ("
+            << r.DVerdict.c_str() << "); its error in the fit raised from "
+            << *f.DError << " to " << r.DError << " m2/s" << nl;
+    }
+    if (record.coarse.eta && !record.coarse.etaError)
+    {
+        throw std::runtime_error
+        (
+            "condition " + c.name + " has eta but no etaError"
+        );
+    }
+    if (record.coarse.eta)
+    {
+        // stored in engine units (kg^2 m s^-3); fitted and plotted
+        // in the m2/s of the solver's flux
+        // (docs/developer/calibration-fit.md)
+        const double toKinematic =
+            sdf::fit::kinematicSievingCoefficient
+            (
+                1.0, c.phi, c.x, r.T,
+                {settings.fine().d, settings.fine().rho},
+                {settings.coarse().d, settings.coarse().rho}
+            );
+        r.hasEta = true;
+        r.eta = toKinematic*(*record.coarse.eta);
+        r.etaError = toKinematic*(*record.coarse.etaError);
+    }
+    if (record.collisions)
+    {
+        // Needed by breakage only: a fault here stops breakage's fit,
+        // not the others
+        try
+        {
+            readImpacts(record, settings, r);
+        }
+        catch (const std::exception& err)
+        {
+            r.hasCollisions = false;
+            r.collisionsError = err.what();
+        }
+    }
+    return r;
+}
+
+
+//- A finite-size calibration's point: its cells' D extrapolated to the
+//  infinite cell (fit/FiniteSize.hpp); the rest (T, eta, collisions) from
+//  the largest cell, the last of `cells`
+StoredResult extrapolatedResult(const std::vector<StoredResult>& cells)
+{
+    StoredResult r = cells.back();
+    std::vector<sdf::fit::SizedValue> rows;
+    for (const StoredResult& c : cells)
+    {
+        rows.push_back({scalar(c.cond.particles), c.D, c.DError});
+        r.DNotConverged = r.DNotConverged || c.DNotConverged;
+    }
+    r.finiteSize = sdf::fit::extrapolateInverseCubeRoot(rows);
+    r.cells = cells;
+    r.cond.particles = 0;   // the point, no longer one cell
+    r.D = r.finiteSize->value;
+    r.DError = r.finiteSize->error;
+    return r;
+}
+
+
 std::vector<StoredResult> readResults
 (
     const fileName& h5,
@@ -190,92 +306,27 @@ std::vector<StoredResult> readResults
         {
             byName[record.name] = &record;
         }
-        for (const calibrationCondition& c : conds)
+        // The envelope's points in order, each with its cells (one, or one
+        // per size of finiteSize, consecutive in conds)
+        std::vector<StoredResult> cells;
+        for (std::size_t i = 0; i < conds.size(); ++i)
         {
+            const calibrationCondition& c = conds[i];
             const auto it = byName.find(c.name);
             if (it == byName.end())
             {
                 throw std::runtime_error("condition " + c.name + " is missing");
             }
-            const sdf::store::ConditionRecord& record = *it->second;
-            if (!record.fine.DError)
+            cells.push_back(storedResultOf(c, *it->second, settings));
+            if (i + 1 < conds.size() && conds[i + 1].pointName == c.pointName)
             {
-                throw std::runtime_error
-                (
-                    "condition " + c.name + " has no DError of the fines"
-                );
+                continue;
             }
-            StoredResult r;
-            r.cond = c;
-            r.T = record.T;
-            r.D = record.fine.D;
-            r.DError = *record.fine.DError;
-            if (record.fine.DConverged && !*record.fine.DConverged)
-            {
-                // Weighted down, not dropped: the disagreements that failed
-                // the check (Green-Kubo - MSD, the MSD slope's change over its
-                // window, the drift of D over the run) and, for a window that
-                // starts before the VACF's decay, the deficit of an
-                // exponential VACF there, D exp(-t_start/tau_v), are added to
-                // the error in quadrature, so a condition whose lags were too
-                // short counts as what it is, an estimate with a systematic
-                // error of that size (docs/user/calibration.md)
-                const sdf::store::SpeciesRecord& f = record.fine;
-                const scalar gkMinusMsd = f.DMsd ? r.D - *f.DMsd : r.D;
-                const scalar truncation =
-                    !f.DWindowPastDecay && f.DCorrelationTime > 0
-                  ? r.D*std::exp(-f.DFitStart/f.DCorrelationTime)
-                  : 0;
-                r.DNotConverged = true;
-                r.DVerdict = f.DVerdict;
-                r.DError = std::sqrt
-                (
-                    sqr(r.DError) + sqr(gkMinusMsd) + sqr(f.DSlopeChange)
-                  + sqr(f.DDrift) + sqr(truncation)
-                );
-                Info<< "    condition " << c.name.c_str()
-                    << ": D of the fines not in the diffusive regime ("
-                    << r.DVerdict.c_str() << "); its error in the fit raised from "
-                    << *f.DError << " to " << r.DError << " m2/s" << nl;
-            }
-            if (record.coarse.eta && !record.coarse.etaError)
-            {
-                throw std::runtime_error
-                (
-                    "condition " + c.name + " has eta but no etaError"
-                );
-            }
-            if (record.coarse.eta)
-            {
-                // stored in engine units (kg^2 m s^-3); fitted and plotted
-                // in the m2/s of the solver's flux
-                // (docs/developer/calibration-fit.md)
-                const double toKinematic =
-                    sdf::fit::kinematicSievingCoefficient
-                    (
-                        1.0, c.phi, c.x, r.T,
-                        {settings.fine().d, settings.fine().rho},
-                        {settings.coarse().d, settings.coarse().rho}
-                    );
-                r.hasEta = true;
-                r.eta = toKinematic*(*record.coarse.eta);
-                r.etaError = toKinematic*(*record.coarse.etaError);
-            }
-            if (record.collisions)
-            {
-                // Needed by breakage only: a fault here stops breakage's fit,
-                // not the others
-                try
-                {
-                    readImpacts(record, settings, r);
-                }
-                catch (const std::exception& err)
-                {
-                    r.hasCollisions = false;
-                    r.collisionsError = err.what();
-                }
-            }
-            out.push_back(r);
+            out.push_back
+            (
+                cells.size() > 1 ? extrapolatedResult(cells) : cells.front()
+            );
+            cells.clear();
         }
     }
     catch (const std::exception& err)
@@ -367,7 +418,13 @@ void plotCoefficient
                << "set key top left\n"
                << "set xlabel 'T [m^2/s^2] (sum of 3 components)'\n"
                << "set ylabel '" << what << "'\n"
-               << "set title 'DEM (Green-Kubo)"
+               << "set title 'DEM (Green-Kubo"
+               << (
+                      isD && !results.empty() && results.front().finiteSize
+                    ? std::string(", infinite cell")
+                    : std::string()
+                  )
+               << ")"
                << (fit ? " and fitted law " + fit->law.name() : std::string())
                << ", x = " << fmt(x) << "'\n"
                << "plot ";
@@ -688,6 +745,50 @@ sdf::fit::ShearScaling reportShearScaling
     return s;
 }
 
+//- A finite-size calibration's extrapolations, per point: printed and
+//  written to postProcessing/calibration/finiteSize.dat
+void reportFiniteSize
+(
+    const Time& runTime,
+    const std::vector<StoredResult>& results,
+    const calibrationSettings& settings
+)
+{
+    const fileName dir(runTime.globalPath()/"postProcessing"/"calibration");
+    mkDir(dir);
+    const fileName dat(dir/"finiteSize.dat");
+    std::ofstream os(dat);
+    os << "# D of the fines per cell size and extrapolated to the infinite cell,"
+       << " D(N) = D_inf - a N^(-1/3)\n# condition N D DError ... D_inf error a"
+       << " aError reducedChi2\n";
+    Info<< "Finite size: D of " << settings.fine().name << " extrapolated to"
+        << " the infinite cell, D(N) = D_inf - a N^(-1/3):" << nl;
+    for (const StoredResult& r : results)
+    {
+        const sdf::fit::FiniteSizeExtrapolation& e = *r.finiteSize;
+        os << r.cond.pointName;
+        Info<< "    " << r.cond.pointName.c_str() << ":";
+        for (const StoredResult& c : r.cells)
+        {
+            os << std::setprecision(8) << " " << c.cond.particles << " " << c.D
+               << " " << c.DError;
+            Info<< " N " << c.cond.particles << " " << fmt(c.D).c_str()
+                << " +- " << fmt(c.DError).c_str() << ",";
+        }
+        os << " " << e.value << " " << e.error << " " << e.slope << " "
+           << e.slopeError << " " << e.reducedChiSquare << "\n";
+        Info<< " -> D_inf " << fmt(e.value).c_str() << " +- "
+            << fmt(e.error).c_str() << " (largest cell "
+            << fmt(100*(r.cells.back().D/e.value - 1)).c_str() << " %";
+        if (e.sizes > 2)
+        {
+            Info<< ", reduced chi2 " << fmt(e.reducedChiSquare).c_str();
+        }
+        Info<< ")" << nl;
+    }
+    Info<< "Written " << dat << nl << endl;
+}
+
 } // End anonymous namespace
 
 
@@ -703,6 +804,10 @@ void Foam::fitAndReport
 {
     // Fits
     const std::vector<StoredResult> results = readResults(h5, settings, conds);
+    if (!settings.finiteSizeParticles().empty())
+    {
+        reportFiniteSize(runTime, results, settings);
+    }
     std::vector<sdf::fit::CalibratedCoefficient> calibrated;
     std::optional<sdf::fit::FitResult> bestD, bestEta;
 

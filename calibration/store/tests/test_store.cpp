@@ -57,6 +57,7 @@ TEST(store, conditionNamesUseSixSignificantDigits)
 TEST(store, shearedConditionsCarryTheirShearRateAndR)
 {
     EXPECT_EQ(shearedConditionName(0.5, 0.4, 20, 1), "phi0.5_x0.4_gammaDot20_seed1");
+    EXPECT_EQ(sizedConditionName(conditionName(0.3, 0.4, 0.01, 1), 300), "phi0.3_x0.4_T0.01_seed1_N300");
 
     const TemporaryDirectory dir;
     const std::string h5 = dir.file("calibration.h5");
@@ -108,6 +109,7 @@ TEST(store, writesAndReadsBackACondition)
     EXPECT_EQ(c.phi, 0.3);
     EXPECT_EQ(c.x, 0.4);
     EXPECT_EQ(c.targetT, 0.01);
+    EXPECT_EQ(c.particles, 200);
     EXPECT_EQ(c.T, r.temperature);
     EXPECT_EQ(c.fine.D, r.species[0].greenKubo.integral.value);
     EXPECT_EQ(*c.fine.DError, r.species[0].greenKubo.integral.standardError);

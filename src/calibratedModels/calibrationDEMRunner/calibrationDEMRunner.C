@@ -135,6 +135,15 @@ Foam::calibrationDEMRunner::calibrationDEMRunner
     coarse.d = mixture.d(coarsei);
     coarse.rho = mixture.rho(coarsei);
     settings_.reset(new calibrationSettings(dict, fine, coarse));
+    if (!settings_->finiteSizeParticles().empty())
+    {
+        FatalIOErrorInFunction(dict)
+            << "outsideEnvelope runDEM runs one cell size per condition; "
+            << dict.objectPath() << " has 'finiteSize' (cells of "
+            << settings_->finiteSizeParticles() << " particles, D"
+            << " extrapolated): use its fitted laws (mode law), or give"
+            << " 'particles' for runDEM" << nl << exit(FatalIOError);
+    }
     if (settings_->sheared())
     {
         FatalIOErrorInFunction(dict)

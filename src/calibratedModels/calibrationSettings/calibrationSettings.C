@@ -53,7 +53,8 @@ const Foam::wordList validEntries
     "collisionFrequencyLaws", "impactEnergyLaws",
     "etaDiameterPower", "fitMaxIterations",
     "particles", "mode", "plot", "concurrentConditions", "fromCase",
-    "equilibrationStrain", "maxEquilibrationStrain", "samplingStrain"
+    "equilibrationStrain", "maxEquilibrationStrain", "samplingStrain",
+    "finiteSize"
 });
 
 
@@ -296,6 +297,13 @@ Foam::calibrationSettings::calibrationSettings
         {coarse_.name, coarse_.d, coarse_.rho}
     };
     b.particles = dict.getOrDefault<label>("particles", 1000);
+    readFiniteSize(dict);
+    if (!finiteSizeParticles_.empty())
+    {
+        // The largest cell is the one whose other results (eta, collisions)
+        // are used; its settings are the base
+        b.particles = finiteSizeParticles_.last();
+    }
     const word mode(dict.getOrDefault<word>("mode", "thermostatted"));
     if (mode != "thermostatted" && mode != "stochastic" && mode != "leesEdwards")
     {
@@ -309,10 +317,11 @@ Foam::calibrationSettings::calibrationSettings
     b.simulation.mode = sdf::dem::cellModeFromName(mode);
     checkRateAxis(dict);
     readStrains(dict);
-    if (samplingStrain_ > 0 && !dict.found("samplingTime"))
+    if (samplingStrain_ > 0)
     {
-        // The run controls require samplingTime; with samplingStrain it is
-        // set per condition (conditionSettings), this value is never run
+        // The run controls require samplingTime; with samplingStrain (and
+        // no time entries, readStrains) it is set per condition
+        // (conditionSettings): this value is never run
         dictionary runControls(dict);
         runControls.add("samplingTime", samplingStrain_);
         demDictionary::readRunControls(runControls, b);
@@ -323,24 +332,56 @@ Foam::calibrationSettings::calibrationSettings
     }
     b.progressEvery = 0;
 
-    settingsKey_ = sdf::store::settingsKey
-    (
-        b,
+    contactModel_ =
         dict.subOrEmptyDict("contact")
-            .getOrDefault<word>("model", "linearSpringDashpot")
-    );
-    if (samplingStrain_ > 0)
-    {
-        // The times of the key are placeholders then: the strains decide
-        settingsKey_ +=
-            " equilibrationStrain " + fmt(equilibrationStrain_)
-          + " maxEquilibrationStrain " + fmt(maxEquilibrationStrain_)
-          + " samplingStrain " + fmt(samplingStrain_);
-    }
+            .getOrDefault<word>("model", "linearSpringDashpot");
+    settingsKey_ = settingsKey(b.particles);
 }
 
 
 // * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+void Foam::calibrationSettings::readFiniteSize(const dictionary& dict)
+{
+    if (!dict.found("finiteSize"))
+    {
+        return;
+    }
+    const dictionary& fs = dict.subDict("finiteSize");
+    modelCoeffs::checkKeys(fs, wordList({"particles"}));
+    if (dict.found("particles"))
+    {
+        FatalIOErrorInFunction(dict)
+            << "Entries 'particles' and 'finiteSize' both given: with"
+            << " finiteSize every condition runs at each of"
+            << " finiteSize/particles; give the cell sizes there only"
+            << nl << exit(FatalIOError);
+    }
+    finiteSizeParticles_ = fs.get<labelList>("particles");
+    if (finiteSizeParticles_.size() < 2)
+    {
+        FatalIOErrorInFunction(fs)
+            << "Entry 'finiteSize/particles' " << finiteSizeParticles_
+            << ": give at least two cell sizes (numbers of particles) to"
+            << " extrapolate D to the infinite cell" << nl
+            << exit(FatalIOError);
+    }
+    for (label i = 0; i < finiteSizeParticles_.size(); ++i)
+    {
+        if
+        (
+            finiteSizeParticles_[i] < 2
+         || (i > 0 && finiteSizeParticles_[i] <= finiteSizeParticles_[i - 1])
+        )
+        {
+            FatalIOErrorInFunction(fs)
+                << "Entry 'finiteSize/particles' " << finiteSizeParticles_
+                << ": give distinct cell sizes (>= 2 particles) from the"
+                << " smallest to the largest" << nl << exit(FatalIOError);
+        }
+    }
+}
+
 
 void Foam::calibrationSettings::readStrains(const dictionary& dict)
 {
@@ -471,10 +512,15 @@ sdf::dem::CellRunSettings Foam::calibrationSettings::conditionSettings
     const scalar x,
     const scalar rate,
     const label seed,
-    const std::string& name
+    const std::string& name,
+    const label particles
 ) const
 {
     sdf::dem::CellRunSettings s = base_;
+    if (particles > 0)
+    {
+        s.particles = particles;
+    }
     s.volumeFractions = {1 - x, x};
     s.solidsFraction = phi;
     if (sheared())
@@ -497,6 +543,26 @@ sdf::dem::CellRunSettings Foam::calibrationSettings::conditionSettings
 }
 
 
+std::string Foam::calibrationSettings::settingsKey(const label particles) const
+{
+    sdf::dem::CellRunSettings b = base_;
+    if (particles > 0)
+    {
+        b.particles = particles;
+    }
+    std::string key = sdf::store::settingsKey(b, contactModel_);
+    if (samplingStrain_ > 0)
+    {
+        // The times of the key are placeholders then: the strains decide
+        key +=
+            " equilibrationStrain " + fmt(equilibrationStrain_)
+          + " maxEquilibrationStrain " + fmt(maxEquilibrationStrain_)
+          + " samplingStrain " + fmt(samplingStrain_);
+    }
+    return key;
+}
+
+
 void Foam::calibrationSettings::appendToStore
 (
     const std::string& path,
@@ -506,7 +572,8 @@ void Foam::calibrationSettings::appendToStore
 {
     sdf::store::appendCondition
     (
-        path, fine_.name, coarse_.name, settingsKey_, inputs, result
+        path, fine_.name, coarse_.name, settingsKey(result.settings.particles),
+        inputs, result
     );
 }
 

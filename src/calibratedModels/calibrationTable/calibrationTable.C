@@ -187,6 +187,20 @@ void Foam::calibrationTable::read()
                     " not as a table"
                 );
             }
+            if (record.particles != contents.conditions.front().particles)
+            {
+                // Cells of several sizes at one grid point would be averaged
+                // as replicas
+                throw std::runtime_error
+                (
+                    "conditions " + contents.conditions.front().name + " and "
+                  + record.name + " ran with "
+                  + std::to_string(contents.conditions.front().particles)
+                  + " and " + std::to_string(record.particles) + " particles"
+                    " (a finite-size calibration): it is used through its"
+                    " fitted laws (mode law), not as a table"
+                );
+            }
             storedCondition c;
             c.name = record.name;
             c.phi = record.phi;
