@@ -646,6 +646,16 @@ void fitBreakage
     Info<< endl;
 }
 
+//- The calibration's output directory, postProcessing/calibration of the
+//  case (created), and a file in it
+fileName outputFile(const Time& runTime, const word& name)
+{
+    const fileName dir(runTime.globalPath()/"postProcessing"/"calibration");
+    mkDir(dir);
+    return dir/name;
+}
+
+
 //- A sheared calibration's dimensionless groups (fit/ShearScaling.hpp):
 //  C = D/(gammaDot dMean^2) of the fines against the Lueptow group's 0.042
 //  and R = dMean gammaDot sqrt(3/T) against the seed's R = 1, per condition
@@ -690,9 +700,7 @@ sdf::fit::ShearScaling reportShearScaling
             << exit(FatalError);
     }
 
-    const fileName dir(runTime.globalPath()/"postProcessing"/"calibration");
-    mkDir(dir);
-    const fileName dat(dir/"shearScaling.dat");
+    const fileName dat(outputFile(runTime, "shearScaling.dat"));
     {
         std::ofstream os(dat);
         os << "# Sheared calibration: fines' D across the shear (yy) in units of"
@@ -754,9 +762,7 @@ void reportFiniteSize
     const calibrationSettings& settings
 )
 {
-    const fileName dir(runTime.globalPath()/"postProcessing"/"calibration");
-    mkDir(dir);
-    const fileName dat(dir/"finiteSize.dat");
+    const fileName dat(outputFile(runTime, "finiteSize.dat"));
     std::ofstream os(dat);
     os << "# D of the fines per cell size and extrapolated to the infinite cell,"
        << " D(N) = D_inf - a N^(-1/3)\n# condition N D DError ... D_inf error a"

@@ -77,12 +77,9 @@ inline ConditionInputs inputs(double phi, double x, double T, std::int64_t seed)
 
 inline ConditionInputs shearedInputs(double phi, double x, double gammaDot, std::int64_t seed)
 {
-    ConditionInputs in;
+    ConditionInputs in = inputs(phi, x, 0, seed);
     in.name = shearedConditionName(phi, x, gammaDot, seed);
-    in.phi = phi;
-    in.x = x;
     in.gammaDot = gammaDot;
-    in.seed = seed;
     return in;
 }
 
