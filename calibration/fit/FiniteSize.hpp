@@ -6,10 +6,11 @@
 //   D(N) = D_inf - a N^(-1/3)          (L ~ N^(1/3) at fixed solids fraction)
 //
 // which the stochastically driven dense cells of the seed's mixture follow
-// (docs/validation.md, "DEM driving": phi 0.3, N 300-2400, reduced chi2 0.92).
+// (docs/validation.md, "DEM driving": phi 0.3, N 300-2400, reduced chi2 0.92 for
+// the MSD's D, 0.36 for Green-Kubo's).
 // D_inf and a are fitted by weighted least squares in u = N^(-1/3) (GSL's
-// gsl_fit_wlinear): two sizes give the line through both points with the errors
-// propagated; three or more give the reduced chi2, and a scatter beyond the errors
+// gsl_fit_wlinear): two rows give the line through both points with the errors
+// propagated; three or more rows give the reduced chi2, and a scatter beyond the errors
 // widens the reported errors by sqrt(chi2/dof).
 #ifndef sdf_fit_FiniteSize_hpp
 #define sdf_fit_FiniteSize_hpp

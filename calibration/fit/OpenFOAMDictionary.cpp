@@ -1,6 +1,7 @@
 #include "fit/OpenFOAMDictionary.hpp"
 
 #include <cctype>
+#include <cmath>
 #include <iomanip>
 #include <set>
 #include <sstream>
@@ -119,15 +120,25 @@ void writeCoefficient(std::ostream& os, const CalibratedCoefficient& entry)
 
 const std::string in1 = "    ";
 
-void writePhiLaw(std::ostream& os, const std::string& name, const PhiPowerLaw& law)
+//- y = A phi^b with its errors; weighted fits give their reduced chi2, a
+//  unit-weight fit (R) the rms scatter of ln y about the law instead
+void writePhiLaw
+(
+    std::ostream& os,
+    const std::string& name,
+    const PhiPowerLaw& law,
+    bool unitWeights
+)
 {
     if (!law.fitted)
     {
         return;
     }
     os << in1 << key(name) << "{ A " << law.A << "; AError " << law.AError
-       << "; b " << law.b << "; bError " << law.bError << "; reducedChi2 "
-       << law.reducedChiSquare << "; }\n";
+       << "; b " << law.b << "; bError " << law.bError << "; "
+       << (unitWeights ? "lnScatter " : "reducedChi2 ")
+       << (unitWeights ? std::sqrt(law.reducedChiSquare) : law.reducedChiSquare)
+       << "; }\n";
 }
 
 void writeShearScaling(std::ostream& os, const ShearScaling& s)
@@ -141,10 +152,10 @@ void writeShearScaling(std::ostream& os, const ShearScaling& s)
     os << in1 << key("C") << s.meanC.value << ";\n";
     os << in1 << key("CError") << s.meanC.error << ";\n";
     os << in1 << key("CReducedChi2") << s.meanC.reducedChiSquare << ";\n";
-    writePhiLaw(os, "CPhiLaw", s.CLaw);
+    writePhiLaw(os, "CPhiLaw", s.CLaw, false);
     os << in1 << key("R") << s.meanR << ";\n";
     os << in1 << key("RSpread") << s.spreadR << ";\n";
-    writePhiLaw(os, "RPhiLaw", s.RLaw);
+    writePhiLaw(os, "RPhiLaw", s.RLaw, true);
     os << in1 << key("points") << s.C.size() << ";\n";
     os << in1 << key("phiRange") << range(s.phi) << ";\n";
     os << in1 << key("xRange") << range(s.x) << ";\n";

@@ -7,6 +7,7 @@
 #include <set>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 namespace sdf::fit
 {
@@ -93,9 +94,14 @@ ShearScaling shearScaling(const std::vector<ShearedObservation>& rows)
     for (std::size_t i = 0; i < n; ++i)
     {
         const ShearedObservation& o = rows[i];
-        for (const double v : {o.phi, o.x, o.gammaDot, o.T, o.dMean, o.D, o.DError})
+        const std::pair<const char*, double> entries[] =
         {
-            check(std::isfinite(v), i, "value", v, "is not finite");
+            {"phi", o.phi}, {"x", o.x}, {"gammaDot", o.gammaDot}, {"T", o.T},
+            {"dMean", o.dMean}, {"D", o.D}, {"DError", o.DError}
+        };
+        for (const auto& e : entries)
+        {
+            check(std::isfinite(e.second), i, e.first, e.second, "is not finite");
         }
         check(o.phi > 0 && o.phi < 1, i, "phi", o.phi, "must be in (0, 1)");
         check(o.x >= 0 && o.x <= 1, i, "x", o.x, "must be in [0, 1]");

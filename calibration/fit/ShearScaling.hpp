@@ -62,7 +62,8 @@ struct ShearScaling
     WeightedMean meanC;
     PhiPowerLaw CLaw;
     //- R has no error of its own here (T's is small): unweighted mean and standard
-    //  deviation of the rows; and its power law in phi (unit weights)
+    //  deviation of the rows; and its power law in phi (unit weights: its
+    //  reducedChiSquare is the variance of ln R about the law, not a chi2)
     double meanR = 0, spreadR = 0;
     PhiPowerLaw RLaw;
     Range phi, x, gammaDot;

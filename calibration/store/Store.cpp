@@ -480,7 +480,8 @@ StoreContents readStore(const std::string& path)
                 c.targetT = g.readDouble("targetT");
             }
             c.T = g.readDouble("T");
-            c.particles = g.readInt64("particles");
+            // Written by every calibration; hand-made stores may lack it
+            c.particles = g.hasAttribute("particles") ? g.readInt64("particles") : 0;
             c.fine = readSpecies(g.openGroup("species/" + contents.fineSpecies));
             const std::string coarse = "species/" + contents.coarseSpecies;
             if (g.hasGroup(coarse))

@@ -215,7 +215,7 @@ struct ConditionRecord
     double targetT = 0;               // driven cells; 0 in sheared ones
     std::optional<double> gammaDot;   // sheared cells: the imposed shear rate [1/s]
     double T = 0;                     // measured
-    std::int64_t particles = 0;       // the cell's size
+    std::int64_t particles = 0;       // the cell's size (0: not recorded)
     //- Sheared cells: d_mean gammaDot sqrt(3/T) (the seed's eq 7 solved for R)
     std::optional<double> savageJeffreyR;
     SpeciesRecord fine;

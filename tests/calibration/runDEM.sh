@@ -79,3 +79,55 @@ OVERRIDES
     ! grep -q "runDEM: phi" "$dir/log.solverRerun" \
         || { echo "the rerun ran DEM conditions again"; return 1; }
 }
+
+# The tabulated models interpolate one value per (phi, x, T) grid point: a
+# store of a finite-size calibration (cells of several sizes per point) and
+# a store of sheared cells (no T grid) are refused with a FatalIOError naming
+# the reason, before any time step
+test_table_refuses_sized_and_sheared_stores()
+{
+    local dir="$workRoot/tableRefusals" kind expect
+    for kind in finiteSize sheared
+    do
+        rm -rf "$dir"; mkdir -p "$dir"
+        cp -r "$projectDir/tutorials/silo2D/"{0.orig,constant,system} "$dir/"
+        rm -rf "$dir/constant/polyMesh" "$dir/constant/granularCoefficients" \
+            "$dir/constant/granularPropertiesOverrides" "$dir/constant/calibration.h5"
+        sed -e 's/^samplingTime .*/samplingTime 0.002;/' -e 's/^plot .*/plot false;/' \
+            -e 's/^phi .*/phi (0.3);/' -e 's/^x .*/x (0.2);/' \
+            "$calibrationCase/system/calibrationDict" > "$dir/system/calibrationDict"
+        local d="$dir/system/calibrationDict"
+        if [ "$kind" = finiteSize ]
+        then
+            foamDictionary -entry particles -remove "$d" > /dev/null
+            foamDictionary -entry finiteSize -set "{ particles (100 200); }" "$d" > /dev/null
+            expect="finite-size calibration"
+        else
+            foamDictionary -entry particles -set 100 "$d" > /dev/null
+            foamDictionary -entry mode -set leesEdwards "$d" > /dev/null
+            foamDictionary -entry T -remove "$d" > /dev/null
+            foamDictionary -entry gammaDot -set "(20 40)" "$d" > /dev/null
+            for e in equilibrationTime maxEquilibrationTime samplingTime
+            do
+                foamDictionary -entry "$e" -remove "$d" > /dev/null
+            done
+            foamDictionary -entry samplingStrain -set 1 "$d" > /dev/null
+            expect="is a sheared cell"
+        fi
+        calibrateGranularMixture -noFit -case "$dir" > "$dir/log.calibrateGranularMixture" 2>&1 \
+            || { tail -30 "$dir/log.calibrateGranularMixture"; return 1; }
+        printf 'endTime 1;\nwriteInterval 1;\nlibs ("libcalibratedModels.so");\n' > "$dir/system/caseParameters"
+        printf 'diffusivity { model calibrated; calibratedCoeffs { mode tabulated; } }\n' \
+            > "$dir/constant/granularPropertiesOverrides"
+        blockMesh -case "$dir" > "$dir/log.blockMesh" 2>&1 || return 1
+        cp -r "$dir/0.orig" "$dir/0"
+        if segregationDegradationFoam -case "$dir" > "$dir/log.solver" 2>&1
+        then
+            echo "$kind store accepted as a table"; return 1
+        fi
+        echo "$kind: $(grep -A3 "FOAM FATAL" "$dir/log.solver" | grep -o "condition.*" | head -1)"
+        grep -q "FOAM FATAL IO ERROR" "$dir/log.solver" || { tail -10 "$dir/log.solver"; return 1; }
+        grep -q "$expect" "$dir/log.solver" || { echo "message lacks '$expect'"; tail -10 "$dir/log.solver"; return 1; }
+        [ ! -d "$dir/1" ] || { echo "a time step was written"; return 1; }
+    done
+}

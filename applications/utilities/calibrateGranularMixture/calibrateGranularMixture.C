@@ -180,6 +180,12 @@ int main(int argc, char *argv[])
         << " phi x " << envelope.x.size() << " x x " << envelope.rates().size()
         << " " << settings.rateName() << " x " << settings.replicas().size()
         << " replicas"
+        << (
+               settings.finiteSizeParticles().empty()
+             ? std::string()
+             : " x " + std::to_string(settings.finiteSizeParticles().size())
+             + " cell sizes"
+           ).c_str()
         << (settings.sheared() ? ", sheared cells (Lees-Edwards)" : "")
         << "), store " << h5
         << nl << endl;
@@ -234,7 +240,7 @@ int main(int argc, char *argv[])
             toRun.push_back(i);
         }
     }
-    const std::vector<label> mine(conditionsOfThisRank(toRun));
+    const std::vector<label> mine(conditionsOfThisRank(conds, toRun));
 
     OSstream& progress = Pstream::parRun() ? Pout : Info();
     const label workers =

@@ -216,9 +216,15 @@ Foam::caseEnvelope Foam::deriveEnvelope
 
     // Options
     const dictionary& opts = dict.subOrEmptyDict("fromCase");
+    // The ratio of the other drive is an unknown key here (it would be
+    // ignored)
     modelCoeffs::checkKeys
     (
-        opts, wordList({"points", "minTRatio", "minGammaDotRatio"})
+        opts,
+        wordList
+        ({
+            "points", settings.sheared() ? "minGammaDotRatio" : "minTRatio"
+        })
     );
     const label points = opts.getOrDefault<label>("points", 3);
     if (points < 1)

@@ -118,13 +118,23 @@ std::vector<Foam::calibrationCondition> Foam::envelopeConditions
 
 std::vector<Foam::label> Foam::conditionsOfThisRank
 (
+    const std::vector<calibrationCondition>& conds,
     const std::vector<label>& todo
 )
 {
+    // Dealt by envelope point: the cells of one point (its sizes, with
+    // finiteSize) go to one rank, so that every rank gets the same mix of
+    // small and large cells (round-robin by cell would give one rank every
+    // small and another every large one)
     std::vector<label> mine;
+    label point = -1;
     for (std::size_t j = 0; j < todo.size(); ++j)
     {
-        if (label(j % Pstream::nProcs()) == Pstream::myProcNo())
+        if (j == 0 || conds[todo[j]].pointName != conds[todo[j - 1]].pointName)
+        {
+            ++point;
+        }
+        if (label(point % Pstream::nProcs()) == Pstream::myProcNo())
         {
             mine.push_back(todo[j]);
         }

@@ -318,7 +318,11 @@ std::vector<StoredResult> readResults
                 throw std::runtime_error("condition " + c.name + " is missing");
             }
             cells.push_back(storedResultOf(c, *it->second, settings));
-            if (i + 1 < conds.size() && conds[i + 1].pointName == c.pointName)
+            if
+            (
+                c.particles > 0 && i + 1 < conds.size()
+             && conds[i + 1].pointName == c.pointName
+            )
             {
                 continue;
             }
@@ -876,8 +880,10 @@ void Foam::fitAndReport
     }
 
     std::optional<sdf::fit::ShearScaling> shear;
-    if (settings.sheared() && coefficients.found("D"))
+    if (settings.sheared())
     {
+        // D of the fines and T are measured in every cell, whichever
+        // coefficients are calibrated
         shear = reportShearScaling(runTime, results, settings);
     }
 

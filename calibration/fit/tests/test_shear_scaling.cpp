@@ -95,6 +95,22 @@ TEST(shear_scaling, weightedMeanOfConstantC)
 }
 
 
+TEST(shear_scaling, rLawErrorsComeFromItsScatter)
+{
+    // R = 1.2 phi^0.8 exactly but one row 10 % high: the unit-weight fit's errors
+    // scale with the scatter of ln R (0 for exact rows)
+    std::vector<ShearedObservation> rows = exactRows(0.02, -1.5, 1.2, 0.8);
+    const ShearScaling exact = shearScaling(rows);
+    EXPECT_LT(exact.RLaw.bError, 1e-9);
+    rows[5].T /= 1.1*1.1;    // R grows by 1.1
+    const ShearScaling off = shearScaling(rows);
+    EXPECT_NEAR(off.R[5], 1.1*exact.R[5], 1e-12);
+    EXPECT_GT(off.RLaw.bError, 0.01);
+    EXPECT_GT(off.RLaw.reducedChiSquare, 1e-4);   // variance of ln R ~ (ln 1.1)^2 (11/12)/10
+    EXPECT_LT(off.RLaw.reducedChiSquare, std::log(1.1)*std::log(1.1));
+}
+
+
 TEST(shear_scaling, refusesBadRowsNamingThem)
 {
     EXPECT_THROW(shearScaling({}), std::invalid_argument);
@@ -113,7 +129,16 @@ TEST(shear_scaling, refusesBadRowsNamingThem)
     }
     rows = exactRows(0.042, 0.0, 1.0, 0.0);
     rows[1].T = std::nan("");
-    EXPECT_THROW(shearScaling(rows), std::invalid_argument);
+    try
+    {
+        shearScaling(rows);
+        ADD_FAILURE() << "no exception";
+    }
+    catch (const std::invalid_argument& err)
+    {
+        const std::string m = err.what();
+        EXPECT_NE(m.find("row 1, T = "), std::string::npos) << m;
+    }
     rows = exactRows(0.042, 0.0, 1.0, 0.0);
     rows[0].DError = 0;
     EXPECT_THROW(shearScaling(rows), std::invalid_argument);

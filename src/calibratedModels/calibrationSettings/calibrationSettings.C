@@ -554,10 +554,17 @@ std::string Foam::calibrationSettings::settingsKey(const label particles) const
     if (samplingStrain_ > 0)
     {
         // The times of the key are placeholders then: the strains decide
+        // %.10g as the rest of the key
+        auto g10 = [](const scalar v)
+        {
+            char buf[32];
+            std::snprintf(buf, sizeof(buf), "%.10g", v);
+            return std::string(buf);
+        };
         key +=
-            " equilibrationStrain " + fmt(equilibrationStrain_)
-          + " maxEquilibrationStrain " + fmt(maxEquilibrationStrain_)
-          + " samplingStrain " + fmt(samplingStrain_);
+            " equilibrationStrain " + g10(equilibrationStrain_)
+          + " maxEquilibrationStrain " + g10(maxEquilibrationStrain_)
+          + " samplingStrain " + g10(samplingStrain_);
     }
     return key;
 }

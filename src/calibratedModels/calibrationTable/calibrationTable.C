@@ -173,6 +173,9 @@ void Foam::calibrationTable::read()
         fineName_ = contents.fineSpecies;
         coarseName_ = contents.coarseSpecies;
 
+        // Per condition name without a cell-size suffix: its particles and
+        // the first record seen
+        std::map<std::string, std::pair<std::int64_t, std::string>> sizeAtPoint;
         for (const sdf::store::ConditionRecord& record : contents.conditions)
         {
             if (record.gammaDot)
@@ -182,22 +185,28 @@ void Foam::calibrationTable::read()
                 throw std::runtime_error
                 (
                     "condition " + record.name + " is a sheared cell (gammaDot "
-                  + std::to_string(*record.gammaDot) + " 1/s): a sheared"
+                  + fmt(*record.gammaDot) + " 1/s): a sheared"
                     " calibration is used through its fitted laws (mode law),"
                     " not as a table"
                 );
             }
-            if (record.particles != contents.conditions.front().particles)
+            // Cells of several sizes at one grid point (a finite-size
+            // calibration's) would be averaged as replicas; conditions run
+            // with different particles at different points are a table
+            const auto size = sizeAtPoint.emplace
+            (
+                record.name.substr(0, record.name.rfind("_N")),
+                std::make_pair(record.particles, record.name)
+            );
+            if (!size.second && size.first->second.first != record.particles)
             {
-                // Cells of several sizes at one grid point would be averaged
-                // as replicas
                 throw std::runtime_error
                 (
-                    "conditions " + contents.conditions.front().name + " and "
-                  + record.name + " ran with "
-                  + std::to_string(contents.conditions.front().particles)
-                  + " and " + std::to_string(record.particles) + " particles"
-                    " (a finite-size calibration): it is used through its"
+                    "conditions " + size.first->second.second + " and "
+                  + record.name + " are one condition run with "
+                  + std::to_string(size.first->second.first) + " and "
+                  + std::to_string(record.particles) + " particles (a"
+                    " finite-size calibration): it is used through its"
                     " fitted laws (mode law), not as a table"
                 );
             }
