@@ -1,5 +1,6 @@
 #include "correlation/StressGreenKubo.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -140,6 +141,44 @@ std::vector<Estimate> kineticSievingCoefficients
                 own.samples
             }
         );
+    }
+    return eta;
+}
+
+std::vector<Estimate> kineticSievingCoefficientsWithCrossTerms
+(
+    const StressProductIntegrals& integrals,
+    const std::vector<double>& composition
+)
+{
+    if (integrals.seriesCount != 3 || composition.size() != 2)
+    {
+        throw std::invalid_argument
+        (
+            "kineticSievingCoefficientsWithCrossTerms: a binary mixture's rule: "
+            "series (J^1, J^2, J^12) and two composition values"
+        );
+    }
+    std::vector<Estimate> eta;
+    for (std::size_t s = 0; s < 2; ++s)
+    {
+        // species s's share of series a: its own part, none of the other's,
+        // its composition share of the cross part
+        const double share[3] = {s == 0 ? 1.0 : 0.0, s == 1 ? 1.0 : 0.0, composition[s]};
+        double value = 0, variance = 0;
+        std::size_t samples = 0;
+        for (std::size_t a = 0; a < 3; ++a)
+        {
+            for (std::size_t b = 0; b < 3; ++b)
+            {
+                const Estimate& term = integrals.term(a, b).integral;
+                const double w = 0.5*(share[a] + share[b]);
+                value += w*term.value;
+                variance += w*w*term.standardError*term.standardError;
+                samples = std::max(samples, term.samples);
+            }
+        }
+        eta.push_back(Estimate{value, std::sqrt(variance), samples});
     }
     return eta;
 }

@@ -3,7 +3,8 @@
 //   J = J^1 + J^2 + J^12,   <J(0) J(t)> = sum_{i,j} <J^i(0) J^j(t)>,
 //   eta_1 = int <J^1 J^1> + c_1 int <J^12 J^12>,
 //   eta_2 = int <J^2 J^2> + c_2 int <J^12 J^12>   (cross terms neglected),
-// with crossToProductRatio reported so that the neglect is checked, not assumed.
+// with crossToProductRatio reported so that the neglect is checked, not assumed,
+// and a rule that keeps the cross terms (kineticSievingCoefficientsWithCrossTerms).
 #ifndef sdf_correlation_StressGreenKubo_hpp
 #define sdf_correlation_StressGreenKubo_hpp
 
@@ -55,6 +56,21 @@ StressProductIntegrals stressProductIntegrals
 //  The errors add the two terms' errors in quadrature (their covariance is
 //  neglected).
 std::vector<Estimate> kineticSievingCoefficients
+(
+    const StressProductIntegrals& integrals,
+    const std::vector<double>& composition
+);
+
+//- The same split with the cross terms kept (docs/developer/calibration-fit.md,
+//  "Kinetic sieving: attributing the cross terms"): each series is owned by the
+//  species it belongs to, J^12 by both in the proportions of composition
+//  (w_i(J^i) = 1, w_i(J^other) = 0, w_i(J^12) = composition_i), and each product
+//  integral I_ab is split between the species by the mean of its two factors'
+//  shares: eta_i = sum_ab (w_i(a) + w_i(b))/2 I_ab. The two eta sum to the
+//  integral of the whole stress autocorrelation, sum_ab I_ab, for any cross
+//  terms; with the cross terms zero it is the seed's rule above. Errors: the
+//  terms' errors times their weights, in quadrature (covariances neglected).
+std::vector<Estimate> kineticSievingCoefficientsWithCrossTerms
 (
     const StressProductIntegrals& integrals,
     const std::vector<double>& composition

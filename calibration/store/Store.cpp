@@ -64,6 +64,8 @@ SpeciesRecord readSpecies(const io::Group& g)
     }
     s.eta = optionalDouble(g, "eta");
     s.etaError = optionalDouble(g, "etaError");
+    s.etaWithCrossTerms = optionalDouble(g, "etaWithCrossTerms");
+    s.etaWithCrossTermsError = optionalDouble(g, "etaWithCrossTermsError");
     return s;
 }
 
@@ -398,6 +400,11 @@ void appendCondition
             {
                 sg.setAttribute("eta", r.kineticSieving[i].value);
                 sg.setAttribute("etaError", r.kineticSieving[i].standardError);
+            }
+            if (i < r.kineticSievingWithCrossTerms.size())
+            {
+                sg.setAttribute("etaWithCrossTerms", r.kineticSievingWithCrossTerms[i].value);
+                sg.setAttribute("etaWithCrossTermsError", r.kineticSievingWithCrossTerms[i].standardError);
             }
         }
         writeCollisions(g, r);

@@ -14,7 +14,8 @@
 //                            cells) (results)
 //   /conditions/<name>/species/<species>
 //                            role (fine | coarse), d, count, T, D, DError,
-//                            DPlateauFound, DMsd, DMsdError, eta, etaError
+//                            DPlateauFound, DMsd, DMsdError, eta, etaError,
+//                            etaWithCrossTerms, etaWithCrossTermsError
 //   /conditions/<name>/species/<species>/diffusiveRegime
 //                            the diffusive-regime check of D (dem::writeDiffusiveRegime:
 //                            converged, verdict, correlationTime, fitStart, fitEnd,
@@ -171,8 +172,11 @@ struct SpeciesRecord
     double DFitStart = 0;
     double DCorrelationTime = 0;
     bool DWindowPastDecay = true;
-    std::optional<double> eta;        // engine units (kg^2 m s^-3)
+    std::optional<double> eta;        // engine units (kg^2 m s^-3), the seed's rule
     std::optional<double> etaError;
+    //- the stress ACF's cross terms kept (absent in stores written before)
+    std::optional<double> etaWithCrossTerms;
+    std::optional<double> etaWithCrossTermsError;
 };
 
 //- Collisions of one unordered species pair of a condition (for breakage rates).

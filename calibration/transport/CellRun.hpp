@@ -114,7 +114,9 @@ struct CellRunResult
     std::vector<std::string> stressSeriesNames;
     std::vector<double> meanStress;        // time mean of J_xy^k / V [Pa]
     correlation::StressProductIntegrals stressIntegrals;
-    std::vector<correlation::Estimate> kineticSieving;   // binary mixtures only
+    std::vector<correlation::Estimate> kineticSieving;   // binary mixtures only: the seed's rule
+    //- the same with the stress ACF's cross terms kept (kineticSievingCoefficientsWithCrossTerms)
+    std::vector<correlation::Estimate> kineticSievingWithCrossTerms;
     CollisionStatistics collisions;
     //- Kinetic energy of the longest-wavelength modes of the momentum density over
     //  equipartition (1: no collective motion), transverse (shear) and longitudinal

@@ -180,13 +180,18 @@ void writeStress(const io::Group& stress, const CellRunResult& r)
         stress.writeMatrix("integrals", value);
         stress.writeMatrix("integralErrors", error);
         writeGreenKubo(stress.createGroup("total"), r.stressIntegrals.total);
-        std::vector<double> eta, etaErr;
-        for (const auto& e : r.kineticSieving) { eta.push_back(e.value); etaErr.push_back(e.standardError); }
-        if (!eta.empty())
+        auto writeEta = [&stress](const std::string& name, const std::vector<correlation::Estimate>& values)
         {
-            stress.writeVector("kineticSieving", eta);
-            stress.writeVector("kineticSievingError", etaErr);
-        }
+            std::vector<double> eta, etaErr;
+            for (const auto& e : values) { eta.push_back(e.value); etaErr.push_back(e.standardError); }
+            if (!eta.empty())
+            {
+                stress.writeVector(name, eta);
+                stress.writeVector(name + "Error", etaErr);
+            }
+        };
+        writeEta("kineticSieving", r.kineticSieving);
+        writeEta("kineticSievingWithCrossTerms", r.kineticSievingWithCrossTerms);
     }
 }
 

@@ -125,7 +125,13 @@ std::string summary(const CellRunResult& r)
     for (std::size_t k = 0; k < r.kineticSieving.size(); ++k)
     {
         out << "  eta_" << r.species[k].name << " = " << r.kineticSieving[k].value << " +- "
-            << r.kineticSieving[k].standardError << "\n";
+            << r.kineticSieving[k].standardError;
+        if (k < r.kineticSievingWithCrossTerms.size())
+        {
+            out << " (cross terms kept: " << r.kineticSievingWithCrossTerms[k].value << " +- "
+                << r.kineticSievingWithCrossTerms[k].standardError << ")";
+        }
+        out << "\n";
     }
     if (!r.stressIntegrals.terms.empty())
     {

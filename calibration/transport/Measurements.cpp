@@ -447,6 +447,11 @@ void StressAutocorrelation::finish(CellRunResult& result, long samples) const
         (
             result.stressIntegrals, result.settings.volumeFractions
         );
+        result.kineticSievingWithCrossTerms =
+            correlation::kineticSievingCoefficientsWithCrossTerms
+            (
+                result.stressIntegrals, result.settings.volumeFractions
+            );
     }
 }
 

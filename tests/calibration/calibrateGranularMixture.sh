@@ -87,7 +87,7 @@ test_calibration_resume()
 test_calibration_bad_input()
 {
     local dir="$workRoot/calibrationBad" kind
-    local kinds="unknownCoefficient unknownLaw emptyPhi invertedT jammedPhi negativeT xOutside textStore foreignHdf5 finiteSizeAndParticles finiteSizeOneSize finiteSizeOrder nveMode shearedWithT shearedNoGammaDot drivenWithGammaDot strainWithTime drivenWithStrain shearedGammaDotZero pairUnknownSpecies pairSetsNothing pairRestitution"
+    local kinds="unknownCoefficient unknownLaw emptyPhi invertedT jammedPhi negativeT xOutside textStore foreignHdf5 finiteSizeAndParticles finiteSizeOneSize finiteSizeOrder badAttribution nveMode shearedWithT shearedNoGammaDot drivenWithGammaDot strainWithTime drivenWithStrain shearedGammaDotZero pairUnknownSpecies pairSetsNothing pairRestitution"
     [ -f "$workRoot/calibration/constant/calibration.h5" ] && kinds="$kinds truncatedStore settingsChanged drivingChanged"
     for kind in $kinds
     do
@@ -111,6 +111,7 @@ test_calibration_bad_input()
                 foamDictionary -entry finiteSize -set "{ particles (200); }" "$d" > /dev/null; expect="at least two cell sizes" ;;
             finiteSizeOrder) foamDictionary -entry particles -remove "$d" > /dev/null
                 foamDictionary -entry finiteSize -set "{ particles (200 100); }" "$d" > /dev/null; expect="from the smallest to the largest" ;;
+            badAttribution) foamDictionary -entry sievingAttribution -set paper "$d" > /dev/null; expect="valid: seed" ;;
             nveMode) foamDictionary -entry mode -set nve "$d" > /dev/null; expect="valid: thermostatted" ;;
             shearedWithT) foamDictionary -entry mode -set leesEdwards "$d" > /dev/null; expect="Entry 'T' does not apply with mode leesEdwards" ;;
             shearedNoGammaDot) foamDictionary -entry mode -set leesEdwards "$d" > /dev/null
@@ -313,4 +314,30 @@ test_calibration_eta()
         || { echo "implausible eta law"; return 1; }
     grep -q "eta of the coarse \[m^2/s\]" "$dir/postProcessing/calibration/eta_x0.2.dat" \
         || { echo "eta data not in m2/s"; return 1; }
+
+    # sievingAttribution crossTerms: the same stored cells, eta with the stress
+    # ACF's cross terms kept; per condition eta(crossTerms)/eta(seed) is the
+    # store's etaWithCrossTerms/eta (the conversion to m2/s cancels)
+    cp "$dir/postProcessing/calibration/eta_x0.2.dat" "$dir/eta_seed.dat"
+    foamDictionary -entry sievingAttribution -set crossTerms "$dir/system/calibrationDict" > /dev/null
+    calibrateGranularMixture -case "$dir" > "$dir/log.crossTerms" 2>&1 || { tail -20 "$dir/log.crossTerms"; return 1; }
+    grep -q "^DEM: 0 conditions run" "$dir/log.crossTerms" || { echo "the attribution reran the DEM"; return 1; }
+    local ratios
+    ratios=$(for g in $(h5ls "$dir/constant/calibration.h5/conditions" | awk '{print $1}' | grep "_x0.2_")
+    do
+        h5dump -a "/conditions/$g/species/coarse/eta" -a "/conditions/$g/species/coarse/etaWithCrossTerms" \
+            -m "%.17g" "$dir/constant/calibration.h5" | awk '/\(0\):/ { printf "%s ", $2 } END { print "" }'
+    done)
+    python3 - "$dir/eta_seed.dat" "$dir/postProcessing/calibration/eta_x0.2.dat" <<PY || return 1
+import sys
+read = lambda f: sorted(float(l.split()[0]) for l in open(f) if l.strip() and not l.startswith("#"))
+rows = lambda f: [tuple(map(float, l.split()[:2])) for l in open(f) if l.strip() and not l.startswith("#")]
+seed, kept = rows(sys.argv[1]), rows(sys.argv[2])
+store = sorted(kept_ / eta for eta, kept_ in (map(float, l.split()) for l in """$ratios""".strip().splitlines()))
+ratios = sorted(k[1] / s[1] for s, k in zip(seed, kept))
+assert len(ratios) == len(store) == 4, (ratios, store)
+assert all(abs(a - b) <= 1e-6 * abs(b) for a, b in zip(ratios, store)), (ratios, store)
+assert any(abs(r - 1) > 1e-3 for r in ratios), "the cross terms changed nothing"
+print("eta with cross terms kept / seed's rule:", " ".join("%.3f" % r for r in ratios))
+PY
 }

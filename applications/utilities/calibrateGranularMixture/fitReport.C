@@ -228,14 +228,29 @@ StoredResult storedResultOf
             << r.DVerdict.c_str() << "); its error in the fit raised from "
             << *f.DError << " to " << r.DError << " m2/s" << nl;
     }
-    if (record.coarse.eta && !record.coarse.etaError)
+    // eta by the attribution rule chosen (sievingAttribution)
+    const bool crossTerms = settings.sievingAttribution() == "crossTerms";
+    const std::optional<double>& eta =
+        crossTerms ? record.coarse.etaWithCrossTerms : record.coarse.eta;
+    const std::optional<double>& etaError =
+        crossTerms ? record.coarse.etaWithCrossTermsError : record.coarse.etaError;
+    if (crossTerms && record.coarse.eta && !eta)
+    {
+        throw std::runtime_error
+        (
+            "condition " + c.name + " was stored before eta with the cross"
+            " terms kept was recorded: remove it from the store to rerun it,"
+            " or use 'sievingAttribution seed;'"
+        );
+    }
+    if (eta && !etaError)
     {
         throw std::runtime_error
         (
             "condition " + c.name + " has eta but no etaError"
         );
     }
-    if (record.coarse.eta)
+    if (eta)
     {
         // stored in engine units (kg^2 m s^-3); fitted and plotted
         // in the m2/s of the solver's flux
@@ -248,8 +263,8 @@ StoredResult storedResultOf
                 {settings.coarse().d, settings.coarse().rho}
             );
         r.hasEta = true;
-        r.eta = toKinematic*(*record.coarse.eta);
-        r.etaError = toKinematic*(*record.coarse.etaError);
+        r.eta = toKinematic*(*eta);
+        r.etaError = toKinematic*(*etaError);
     }
     if (record.collisions)
     {

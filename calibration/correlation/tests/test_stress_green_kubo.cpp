@@ -83,6 +83,15 @@ TEST_F(StressGreenKubo, NineProductIntegralsRatioAndSeedRule)
     EXPECT_NEAR(eta[0].value, (4.0 + 0.3 * 1.36) * d0, 3.5 * eta[0].standardError);
     EXPECT_NEAR(eta[1].value, (1.0 + 0.7 * 1.36) * d0, 3.5 * eta[1].standardError);
     EXPECT_THROW(kineticSievingCoefficients(r, {1.0}), std::invalid_argument);
+
+    // Cross terms kept: shares (1, 0, 0.3) and (0, 1, 0.7) of (J1, J2, J12):
+    // eta_1 = I11 + 0.3 I33 + 1.3 I13 = 5.968 D0, eta_2 = I22 + 0.7 I33 + 0.7 I13 = 2.792 D0,
+    // summing to the whole autocorrelation's 8.76 D0
+    const std::vector<Estimate> kept = kineticSievingCoefficientsWithCrossTerms(r, {0.3, 0.7});
+    ASSERT_EQ(kept.size(), 2u);
+    EXPECT_NEAR(kept[0].value, 5.968 * d0, 3.5 * kept[0].standardError);
+    EXPECT_NEAR(kept[1].value, 2.792 * d0, 3.5 * kept[1].standardError);
+    EXPECT_THROW(kineticSievingCoefficientsWithCrossTerms(r, {1.0}), std::invalid_argument);
     std::cout << "[ figures  ] I11 " << r.term(0, 0).integral.value << " +- " << r.term(0, 0).integral.standardError
               << " (exact " << exact(0, 0) << "), I13 " << r.term(0, 2).integral.value << " +- "
               << r.term(0, 2).integral.standardError << " (exact " << exact(0, 2) << "), cross/product "
@@ -111,4 +120,41 @@ TEST_F(StressGreenKubo, NineProductIntegralsRatioAndSeedRule)
     EXPECT_NEAR(s.total.integral.value, r.total.integral.value,
                 3.0 * std::hypot(s.total.integral.standardError, r.total.integral.standardError));
     EXPECT_THROW(stressProductIntegrals(streaming.blocks(), ou_.dt, 2), std::invalid_argument);
+}
+
+
+TEST(StressAttribution, CrossTermsKeptSumToTheWholeAndReduceToTheSeedsRule)
+{
+    // Integrals set by hand: with the cross terms zero the two rules agree
+    // exactly; with them the kept rule's eta sum to sum_ab I_ab
+    auto integrals = [](const double table[3][3])
+    {
+        StressProductIntegrals r;
+        r.seriesCount = 3;
+        r.terms.resize(9);
+        for (std::size_t i = 0; i < 9; ++i)
+        {
+            // an error only where there is a value: a zero term of the
+            // diagonal table is exactly zero
+            const double v = table[i / 3][i % 3];
+            r.terms[i].integral = Estimate{v, v != 0.0 ? 0.01 : 0.0, 100};
+        }
+        return r;
+    };
+    const double diagonal[3][3] = {{2.0, 0.0, 0.0}, {0.0, 0.5, 0.0}, {0.0, 0.0, 0.8}};
+    const std::vector<double> c = {0.8, 0.2};
+    const auto seed = kineticSievingCoefficients(integrals(diagonal), c);
+    const auto kept = kineticSievingCoefficientsWithCrossTerms(integrals(diagonal), c);
+    for (std::size_t s = 0; s < 2; ++s)
+    {
+        EXPECT_DOUBLE_EQ(kept[s].value, seed[s].value);
+        EXPECT_DOUBLE_EQ(kept[s].standardError, seed[s].standardError);
+    }
+    const double full[3][3] = {{2.0, -0.4, 0.6}, {-0.4, 0.5, 0.3}, {0.6, 0.3, 0.8}};
+    const auto withCross = kineticSievingCoefficientsWithCrossTerms(integrals(full), c);
+    double sum = 0.0;
+    for (const auto& row : full) for (const double v : row) sum += v;
+    EXPECT_NEAR(withCross[0].value + withCross[1].value, sum, 1e-14);
+    // eta_1 = 2 + 0.8*0.8 + 2*(-0.4)*(1+0)/2 + 2*0.6*(1+0.8)/2 + 2*0.3*(0+0.8)/2 = 3.56
+    EXPECT_NEAR(withCross[0].value, 3.56, 1e-14);
 }

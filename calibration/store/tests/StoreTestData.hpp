@@ -47,6 +47,7 @@ inline dem::CellRunResult syntheticResult(double scale = 1)
         r.species.push_back(st);
     }
     r.kineticSieving = {{3e-9*scale, 1e-10*scale, 0}, {7e-9*scale, 2e-10*scale, 0}};
+    r.kineticSievingWithCrossTerms = {{4e-9*scale, 1.5e-10*scale, 0}, {9e-9*scale, 3e-10*scale, 0}};
     // collisions: 3 log bins, pairs (small, small), (small, large), (large, large);
     // each pair's histogram (under, bins, over) adds up to its count
     r.collisions.reset(2, 1e-9*scale, 1e-6*scale, 3);

@@ -115,6 +115,8 @@ TEST(store, writesAndReadsBackACondition)
     EXPECT_EQ(*c.fine.DError, r.species[0].greenKubo.integral.standardError);
     EXPECT_EQ(*c.coarse.eta, r.kineticSieving[1].value);
     EXPECT_EQ(*c.coarse.etaError, r.kineticSieving[1].standardError);
+    EXPECT_EQ(*c.coarse.etaWithCrossTerms, r.kineticSievingWithCrossTerms[1].value);
+    EXPECT_EQ(*c.coarse.etaWithCrossTermsError, r.kineticSievingWithCrossTerms[1].standardError);
     EXPECT_EQ(contents.conditions[0].fine.D, 2*r.species[0].greenKubo.integral.value);
     // the diffusive-regime check read back: the fines converged, the coarse not
     EXPECT_EQ(*c.fine.DMsd, r.species[0].diffusivityMsd.value);

@@ -54,7 +54,7 @@ const Foam::wordList validEntries
     "etaDiameterPower", "fitMaxIterations",
     "particles", "mode", "plot", "concurrentConditions", "fromCase",
     "equilibrationStrain", "maxEquilibrationStrain", "samplingStrain",
-    "finiteSize"
+    "finiteSize", "sievingAttribution"
 });
 
 
@@ -270,6 +270,17 @@ Foam::calibrationSettings::calibrationSettings
         "Wmean"
     );
     etaDiameterPower_ = dict.getOrDefault<label>("etaDiameterPower", 1);
+    sievingAttribution_ =
+        dict.getOrDefault<word>("sievingAttribution", "seed");
+    if (sievingAttribution_ != "seed" && sievingAttribution_ != "crossTerms")
+    {
+        FatalIOErrorInFunction(dict)
+            << "Entry 'sievingAttribution' " << sievingAttribution_
+            << ": valid: seed (the seed's eqs 8-13, the stress"
+            << " autocorrelation's cross terms dropped), crossTerms (kept,"
+            << " split by the species' shares; docs/user/calibration.md)"
+            << nl << exit(FatalIOError);
+    }
     fitMaxIterations_ = dict.getOrDefault<label>("fitMaxIterations", 2000);
     if (fitMaxIterations_ < 1)
     {
