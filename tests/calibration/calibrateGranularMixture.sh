@@ -330,7 +330,6 @@ test_calibration_eta()
     done)
     python3 - "$dir/eta_seed.dat" "$dir/postProcessing/calibration/eta_x0.2.dat" <<PY || return 1
 import sys
-read = lambda f: sorted(float(l.split()[0]) for l in open(f) if l.strip() and not l.startswith("#"))
 rows = lambda f: [tuple(map(float, l.split()[:2])) for l in open(f) if l.strip() and not l.startswith("#")]
 seed, kept = rows(sys.argv[1]), rows(sys.argv[2])
 store = sorted(kept_ / eta for eta, kept_ in (map(float, l.split()) for l in """$ratios""".strip().splitlines()))

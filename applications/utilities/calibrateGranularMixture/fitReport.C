@@ -228,7 +228,8 @@ StoredResult storedResultOf
             << r.DVerdict.c_str() << "); its error in the fit raised from "
             << *f.DError << " to " << r.DError << " m2/s" << nl;
     }
-    // eta by the attribution rule chosen (sievingAttribution)
+    // eta by the attribution rule chosen (sievingAttribution; the fit's
+    // choice only: the tabulated models read the seed's eta)
     const bool crossTerms = settings.sievingAttribution() == "crossTerms";
     const std::optional<double>& eta =
         crossTerms ? record.coarse.etaWithCrossTerms : record.coarse.eta;
@@ -884,7 +885,8 @@ void Foam::fitAndReport
             coeff,
             isD
           ? "diffusivity of " + settings.fine().name
-          : "kinetic sieving coefficient of " + settings.coarse().name,
+          : "kinetic sieving coefficient of " + settings.coarse().name
+          + ", sievingAttribution " + settings.sievingAttribution(),
             rows,
             isD ? settings.laws() : settings.etaLaws(),
             options,
