@@ -1,6 +1,5 @@
 #include "correlation/StressGreenKubo.hpp"
 
-#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -112,38 +111,66 @@ StressProductIntegrals stressProductIntegrals
     return result;
 }
 
-std::vector<Estimate> kineticSievingCoefficients
+namespace
+{
+
+//- Both rules of a binary mixture (series J^1, J^2, J^12): species s owns its
+//  part, none of the other's and its composition share of J^12, and gets
+//  each product integral I_ab by the mean of its two factors' shares; the
+//  seed's rule takes the products of a part with itself only (a == b).
+//  Errors: the terms' errors times their weights, in quadrature.
+std::vector<Estimate> attributedCoefficients
 (
     const StressProductIntegrals& integrals,
-    const std::vector<double>& composition
+    const std::vector<double>& composition,
+    bool keepCrossTerms,
+    const char* who
 )
 {
     if (integrals.seriesCount != 3 || composition.size() != 2)
     {
         throw std::invalid_argument
         (
-            "kineticSievingCoefficients: the seed's rule is for a binary mixture: "
+            std::string(who) + ": a binary mixture's rule: "
             "series (J^1, J^2, J^12) and two composition values"
         );
     }
-    const Estimate shared = integrals.term(2, 2).integral;
     std::vector<Estimate> eta;
     for (std::size_t s = 0; s < 2; ++s)
     {
-        const Estimate own = integrals.term(s, s).integral;
-        const double c = composition[s];
-        eta.push_back
-        (
-            Estimate
+        const double share[3] = {s == 0 ? 1.0 : 0.0, s == 1 ? 1.0 : 0.0, composition[s]};
+        double value = 0, variance = 0;
+        for (std::size_t a = 0; a < 3; ++a)
+        {
+            for (std::size_t b = 0; b < 3; ++b)
             {
-                own.value + c * shared.value,
-                std::hypot(own.standardError, c * shared.standardError),
-                own.samples
+                if (!keepCrossTerms && a != b)
+                {
+                    continue;
+                }
+                const Estimate& term = integrals.term(a, b).integral;
+                const double w = 0.5*(share[a] + share[b]);
+                value += w*term.value;
+                variance += w*w*term.standardError*term.standardError;
             }
-        );
+        }
+        eta.push_back(Estimate{value, std::sqrt(variance), integrals.term(s, s).integral.samples});
     }
     return eta;
 }
+
+} // namespace
+
+
+std::vector<Estimate> kineticSievingCoefficients
+(
+    const StressProductIntegrals& integrals,
+    const std::vector<double>& composition
+)
+{
+    return attributedCoefficients(integrals, composition, false, "kineticSievingCoefficients");
+}
+
 
 std::vector<Estimate> kineticSievingCoefficientsWithCrossTerms
 (
@@ -151,36 +178,10 @@ std::vector<Estimate> kineticSievingCoefficientsWithCrossTerms
     const std::vector<double>& composition
 )
 {
-    if (integrals.seriesCount != 3 || composition.size() != 2)
-    {
-        throw std::invalid_argument
-        (
-            "kineticSievingCoefficientsWithCrossTerms: a binary mixture's rule: "
-            "series (J^1, J^2, J^12) and two composition values"
-        );
-    }
-    std::vector<Estimate> eta;
-    for (std::size_t s = 0; s < 2; ++s)
-    {
-        // species s's share of series a: its own part, none of the other's,
-        // its composition share of the cross part
-        const double share[3] = {s == 0 ? 1.0 : 0.0, s == 1 ? 1.0 : 0.0, composition[s]};
-        double value = 0, variance = 0;
-        std::size_t samples = 0;
-        for (std::size_t a = 0; a < 3; ++a)
-        {
-            for (std::size_t b = 0; b < 3; ++b)
-            {
-                const Estimate& term = integrals.term(a, b).integral;
-                const double w = 0.5*(share[a] + share[b]);
-                value += w*term.value;
-                variance += w*w*term.standardError*term.standardError;
-                samples = std::max(samples, term.samples);
-            }
-        }
-        eta.push_back(Estimate{value, std::sqrt(variance), samples});
-    }
-    return eta;
+    return attributedCoefficients
+    (
+        integrals, composition, true, "kineticSievingCoefficientsWithCrossTerms"
+    );
 }
 
 } // namespace sdf::correlation

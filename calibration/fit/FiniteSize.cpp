@@ -1,8 +1,7 @@
 #include "fit/FiniteSize.hpp"
 
-#include <gsl/gsl_fit.h>
+#include "fit/WeightedLine.hpp"
 
-#include <algorithm>
 #include <cmath>
 #include <set>
 #include <stdexcept>
@@ -45,16 +44,14 @@ FiniteSizeExtrapolation extrapolateInverseCubeRoot(const std::vector<SizedValue>
         y[i] = rows[i].value;
         w[i] = 1.0/(rows[i].sigma*rows[i].sigma);
     }
-    double c0, c1, cov00, cov01, cov11, chi2;
-    gsl_fit_wlinear(u.data(), 1, w.data(), 1, y.data(), 1, n, &c0, &c1, &cov00, &cov01, &cov11, &chi2);
+    const WeightedLine line = weightedLine(u, y, w, LineErrors::widenWhenScattered);
     FiniteSizeExtrapolation e;
     e.sizes = sizes.size();
-    e.reducedChiSquare = n > 2 ? chi2/double(n - 2) : 0;
-    const double widen = std::max(1.0, std::sqrt(e.reducedChiSquare));
-    e.value = c0;
-    e.error = std::sqrt(cov00)*widen;
-    e.slope = -c1;
-    e.slopeError = std::sqrt(cov11)*widen;
+    e.reducedChiSquare = line.reducedChiSquare;
+    e.value = line.intercept;
+    e.error = line.interceptError;
+    e.slope = -line.slope;
+    e.slopeError = line.slopeError;
     return e;
 }
 

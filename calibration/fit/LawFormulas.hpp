@@ -30,6 +30,13 @@ inline double carnahanStarlingG0(double phi)
     return (1.0 - 0.5*phi)/(oneMinus*oneMinus*oneMinus);
 }
 
+//- The Savage-Jeffrey parameter of a sheared cell, the seed's eq 7 solved for R:
+//  R = dMean gammaDot sqrt(3/T) (the solver's savageJeffrey model inverts it)
+inline double savageJeffreyR(double dMean, double gammaDot, double T)
+{
+    return dMean*gammaDot*std::sqrt(3.0/T);
+}
+
 //- The seed's eq 15 generalised: D = A (1 + x)^a T^m phi^b
 inline double powerLaw(double A, double a, double m, double b, double phi, double x, double T)
 {

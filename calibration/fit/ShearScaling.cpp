@@ -1,6 +1,7 @@
 #include "fit/ShearScaling.hpp"
 
-#include <gsl/gsl_fit.h>
+#include "fit/LawFormulas.hpp"
+#include "fit/WeightedLine.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -32,7 +33,8 @@ PhiPowerLaw phiPowerLaw
 (
     const std::vector<double>& phi,
     const std::vector<double>& y,
-    const std::vector<double>& sigma
+    const std::vector<double>& sigma,
+    LineErrors errors
 )
 {
     PhiPowerLaw law;
@@ -50,14 +52,12 @@ PhiPowerLaw phiPowerLaw
         const double s = sigma[i]/y[i];
         w[i] = 1.0/(s*s);
     }
-    double c0, c1, cov00, cov01, cov11, chi2;
-    gsl_fit_wlinear(lx.data(), 1, w.data(), 1, ly.data(), 1, n, &c0, &c1, &cov00, &cov01, &cov11, &chi2);
-    law.reducedChiSquare = chi2/double(n - 2);
-    const double widen = std::max(1.0, std::sqrt(law.reducedChiSquare));
-    law.A = std::exp(c0);
-    law.AError = law.A*std::sqrt(cov00)*widen;
-    law.b = c1;
-    law.bError = std::sqrt(cov11)*widen;
+    const WeightedLine line = weightedLine(lx, ly, w, errors);
+    law.reducedChiSquare = line.reducedChiSquare;
+    law.A = std::exp(line.intercept);
+    law.AError = law.A*line.interceptError;
+    law.b = line.slope;
+    law.bError = line.slopeError;
     law.fitted = true;
     return law;
 }
@@ -90,7 +90,7 @@ ShearScaling shearScaling(const std::vector<ShearedObservation>& rows)
     }
     const std::size_t n = rows.size();
     ShearScaling s;
-    std::vector<double> phi(n), unit(n);
+    std::vector<double> phi(n);
     for (std::size_t i = 0; i < n; ++i)
     {
         const ShearedObservation& o = rows[i];
@@ -113,7 +113,7 @@ ShearScaling shearScaling(const std::vector<ShearedObservation>& rows)
         const double scale = o.gammaDot*o.dMean*o.dMean;
         s.C.push_back(o.D/scale);
         s.CError.push_back(o.DError/scale);
-        s.R.push_back(o.dMean*o.gammaDot*std::sqrt(3.0/o.T));
+        s.R.push_back(formulas::savageJeffreyR(o.dMean, o.gammaDot, o.T));
         phi[i] = o.phi;
     }
 
@@ -134,7 +134,7 @@ ShearScaling shearScaling(const std::vector<ShearedObservation>& rows)
     }
     s.meanC.reducedChiSquare = n > 1 ? chi2/double(n - 1) : 0;
     s.meanC.error = std::sqrt(1.0/sw)*std::max(1.0, std::sqrt(s.meanC.reducedChiSquare));
-    s.CLaw = phiPowerLaw(phi, s.C, s.CError);
+    s.CLaw = phiPowerLaw(phi, s.C, s.CError, LineErrors::widenWhenScattered);
 
     // R: unweighted (the error of T is a fraction of a percent)
     double sum = 0, sum2 = 0;
@@ -145,18 +145,8 @@ ShearScaling shearScaling(const std::vector<ShearedObservation>& rows)
     }
     s.meanR = sum/double(n);
     s.spreadR = n > 1 ? std::sqrt(std::max(0.0, (sum2 - n*s.meanR*s.meanR)/double(n - 1))) : 0;
-    for (std::size_t i = 0; i < n; ++i)
-    {
-        unit[i] = s.R[i];   // unit relative weights: sigma_ln = 1
-    }
-    s.RLaw = phiPowerLaw(phi, s.R, unit);
-    if (s.RLaw.fitted)
-    {
-        // unit weights: the errors come from the scatter alone
-        const double scatter = std::sqrt(s.RLaw.reducedChiSquare);
-        s.RLaw.AError = s.RLaw.AError/std::max(1.0, scatter)*scatter;
-        s.RLaw.bError = s.RLaw.bError/std::max(1.0, scatter)*scatter;
-    }
+    // unit relative weights (sigma_ln = 1): the errors come from the scatter alone
+    s.RLaw = phiPowerLaw(phi, s.R, s.R, LineErrors::fromScatter);
 
     s.phi = rangeOf(rows, &ShearedObservation::phi);
     s.x = rangeOf(rows, &ShearedObservation::x);

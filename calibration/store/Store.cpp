@@ -259,19 +259,29 @@ void checkIsStore(const io::Group& root)
 }
 
 
-std::string conditionName(double phi, double x, double T, std::int64_t seed)
+namespace
+{
+
+//- phi<phi>_x<x>_<drive><value>_seed<seed>
+std::string pointName(double phi, double x, const char* drive, double value, std::int64_t seed)
 {
     return
-        "phi" + fmt6(phi) + "_x" + fmt6(x) + "_T" + fmt6(T)
+        "phi" + fmt6(phi) + "_x" + fmt6(x) + "_" + drive + fmt6(value)
       + "_seed" + std::to_string(seed);
+}
+
+} // namespace
+
+
+std::string conditionName(double phi, double x, double T, std::int64_t seed)
+{
+    return pointName(phi, x, "T", T, seed);
 }
 
 
 std::string shearedConditionName(double phi, double x, double gammaDot, std::int64_t seed)
 {
-    return
-        "phi" + fmt6(phi) + "_x" + fmt6(x) + "_gammaDot" + fmt6(gammaDot)
-      + "_seed" + std::to_string(seed);
+    return pointName(phi, x, "gammaDot", gammaDot, seed);
 }
 
 

@@ -3,6 +3,7 @@
 #include "correlation/DiffusiveRegime.hpp"
 #include "correlation/GreenKubo.hpp"
 #include "correlation/Statistics.hpp"
+#include "fit/LawFormulas.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -135,7 +136,8 @@ void TemperatureMeasurement::finish(CellRunResult& result, long) const
     const SimulationSettings& sim = result.settings.simulation;
     if (sim.mode == CellMode::leesEdwards && T.value > 0)
     {
-        result.savageJeffreyR = result.meanDiameter*std::abs(sim.shearRate)*std::sqrt(3.0/T.value);
+        result.savageJeffreyR =
+            fit::formulas::savageJeffreyR(result.meanDiameter, std::abs(sim.shearRate), T.value);
     }
     for (std::size_t s = 0; s < species_.size(); ++s)
     {

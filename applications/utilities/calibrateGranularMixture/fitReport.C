@@ -381,6 +381,13 @@ void reportFit(const sdf::fit::FitResult& fit)
 }
 
 
+//- The calibration's output directory, postProcessing/calibration of the case
+fileName outputDirectory(const Time& runTime)
+{
+    return runTime.globalPath()/"postProcessing"/"calibration";
+}
+
+
 //- Data file and gnuplot PNG of a coefficient (D of the fines or eta of
 //  the coarse) vs T per phi, one figure per x
 void plotCoefficient
@@ -666,11 +673,10 @@ void fitBreakage
     Info<< endl;
 }
 
-//- The calibration's output directory, postProcessing/calibration of the
-//  case (created), and a file in it
+//- A file in the calibration's output directory (created)
 fileName outputFile(const Time& runTime, const word& name)
 {
-    const fileName dir(runTime.globalPath()/"postProcessing"/"calibration");
+    const fileName dir(outputDirectory(runTime));
     mkDir(dir);
     return dir/name;
 }
@@ -933,7 +939,7 @@ void Foam::fitAndReport
 
     if (settings.plot())
     {
-        const fileName dir(runTime.globalPath()/"postProcessing"/"calibration");
+        const fileName dir(outputDirectory(runTime));
         plotCoefficient(dir, results, settings, envelope, bestD ? &*bestD : nullptr, true);
         bool haveEta = true;
         for (const StoredResult& r : results) haveEta = haveEta && r.hasEta;
