@@ -111,6 +111,49 @@ StressProductIntegrals stressProductIntegrals
     return result;
 }
 
+std::vector<LaggedCorrelation> aboutBlockMeans
+(
+    std::vector<LaggedCorrelation> blocks,
+    const std::vector<std::vector<double>>& blockMeans,
+    std::size_t seriesCount
+)
+{
+    if (blockMeans.size() != blocks.size())
+    {
+        throw std::invalid_argument
+        (
+            "aboutBlockMeans: " + std::to_string(blocks.size()) + " blocks but "
+          + std::to_string(blockMeans.size()) + " block means"
+        );
+    }
+    for (std::size_t b = 0; b < blocks.size(); ++b)
+    {
+        const std::vector<double>& m = blockMeans[b];
+        Eigen::ArrayXXd& values = blocks[b].values;
+        if
+        (
+            m.size() != seriesCount
+         || values.cols() != static_cast<Eigen::Index>(seriesCount * seriesCount)
+        )
+        {
+            throw std::invalid_argument
+            (
+                "aboutBlockMeans: block " + std::to_string(b) + " has "
+              + std::to_string(m.size()) + " means and " + std::to_string(values.cols())
+              + " columns for " + std::to_string(seriesCount) + " series"
+            );
+        }
+        for (std::size_t i = 0; i < seriesCount; ++i)
+        {
+            for (std::size_t j = 0; j < seriesCount; ++j)
+            {
+                values.col(static_cast<Eigen::Index>(i * seriesCount + j)) -= m[i] * m[j];
+            }
+        }
+    }
+    return blocks;
+}
+
 namespace
 {
 

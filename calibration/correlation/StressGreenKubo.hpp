@@ -50,6 +50,20 @@ StressProductIntegrals stressProductIntegrals
     const PlateauSettings& settings = PlateauSettings()
 );
 
+//- The blocks' product correlations about their means: C_ij(t) - m_i m_j in each block,
+//  m_i the block's mean of series i (blockMeans[block][i]). A sheared cell's shear stress
+//  has a mean (its rheology): <s_i(0) s_j(t)> then tends to m_i m_j, not to zero, and the
+//  Green-Kubo integral of the raw products grows with t instead of reaching a plateau.
+//  Subtracting the block's own mean leaves a bias of order (correlation time / block
+//  length) of the fluctuations' integral, the standard estimator's. Throws
+//  std::invalid_argument when the counts of blocks or series do not match.
+std::vector<LaggedCorrelation> aboutBlockMeans
+(
+    std::vector<LaggedCorrelation> blocks,
+    const std::vector<std::vector<double>>& blockMeans,
+    std::size_t seriesCount
+);
+
 //- The seed's rule for a binary mixture, series ordered (J^1, J^2, J^12):
 //  eta_i = I_ii + composition_i I_{12,12}. composition: the two species'
 //  shares of the solids (volume fractions of the solids, summing to 1).

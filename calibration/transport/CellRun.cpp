@@ -247,8 +247,9 @@ struct SamplingProgress
     double cpuBefore = 0;
 };
 
-// 2: the collective-motion sums were added (a format-1 checkpoint lacks them)
-const std::string checkpointFormat = "sdf_dem CellRun 2";
+// 2: the collective-motion sums were added (a format-1 checkpoint lacks them); 3: the
+// stress series' block means (their products are correlated about them)
+const std::string checkpointFormat = "sdf_dem CellRun 3";
 
 void writeCellCheckpoint
 (

@@ -399,7 +399,8 @@ StressAutocorrelation::StressAutocorrelation
     volume_(volume),
     plan_(plan),
     correlator_(parts_.size(), correlatorSettings()),
-    stressSum_(parts_.size(), 0.0)
+    stressSum_(parts_.size(), 0.0),
+    blockSum_(parts_.size(), 0.0)
 {}
 
 void StressAutocorrelation::sample(const Simulation& x, long)
@@ -413,24 +414,56 @@ void StressAutocorrelation::sample(const Simulation& x, long)
         const Eigen::Matrix3d Jk = a == b ? J.speciesStress(a) : J.crossStress(a, b);
         series[k] = Jk(0, 1)/sqrtV;
         stressSum_[k] += Jk(0, 1)/volume_;
+        blockSum_[k] += series[k];
     }
+    ++blockSamples_;
     correlator_.add(series);
 }
 
 void StressAutocorrelation::closeBlock()
 {
     correlator_.closeBlock();
+    std::vector<double> mean = blockSum_;
+    for (double& m : mean) m /= std::max(1L, blockSamples_);
+    blockMeans_.push_back(mean);
+    std::fill(blockSum_.begin(), blockSum_.end(), 0.0);
+    blockSamples_ = 0;
 }
 
 void StressAutocorrelation::save(io::Checkpoint& c) const
 {
     c.vectors["cellRun_meanStress"] = stressSum_;
+    // the open block's sums, its sample count last; the closed blocks' means in a row
+    std::vector<double> open = blockSum_;
+    open.push_back(double(blockSamples_));
+    c.vectors["cellRun_stressBlockSum"] = open;
+    std::vector<double> closed;
+    for (const std::vector<double>& m : blockMeans_) closed.insert(closed.end(), m.begin(), m.end());
+    c.vectors["cellRun_stressBlockMeans"] = closed;
     saveCorrelator(c, "cellRun_stress", "", correlator_);
 }
 
 void StressAutocorrelation::load(const io::Checkpoint& c, const std::string& f)
 {
     stressSum_ = entry(c.vectors, "cellRun_meanStress", f);
+    const std::vector<double>& open = entry(c.vectors, "cellRun_stressBlockSum", f);
+    const std::vector<double>& closed = entry(c.vectors, "cellRun_stressBlockMeans", f);
+    const std::size_t n = parts_.size();
+    if (open.size() != n + 1 || closed.size() % n != 0)
+    {
+        throw std::invalid_argument
+        (
+            "checkpoint '" + f + "': the stress block sums do not match " + std::to_string(n)
+          + " stress series"
+        );
+    }
+    blockSum_.assign(open.begin(), open.end() - 1);
+    blockSamples_ = long(open.back());
+    blockMeans_.clear();
+    for (std::size_t b = 0; b < closed.size()/n; ++b)
+    {
+        blockMeans_.emplace_back(closed.begin() + long(b*n), closed.begin() + long((b + 1)*n));
+    }
     loadCorrelator(c, "cellRun_stress", "", f, correlator_);
 }
 
@@ -439,9 +472,11 @@ void StressAutocorrelation::finish(CellRunResult& result, long samples) const
     result.meanStress = stressSum_;
     for (double& m : result.meanStress) m /= std::max(1L, samples);
     if (correlator_.blocks().size() < 2) return;
+    // about each block's mean: a sheared cell's shear stress has one
     result.stressIntegrals = correlation::stressProductIntegrals
     (
-        correlator_.blocks(), plan_.sampleInterval, parts_.size(), plateauSettings(plan_)
+        correlation::aboutBlockMeans(correlator_.blocks(), blockMeans_, parts_.size()),
+        plan_.sampleInterval, parts_.size(), plateauSettings(plan_)
     );
     if (result.settings.species.size() == 2)
     {

@@ -104,6 +104,11 @@ private:
     SamplingPlan plan_;
     correlation::SeriesProductCorrelator correlator_;
     std::vector<double> stressSum_;    // sum over samples of J_xy^k / V
+    //- The open block's sums of the series J_xy^k/sqrt(V) and its sample count, the closed
+    //  blocks' means: the products are correlated about them (a sheared cell's mean stress)
+    std::vector<double> blockSum_;
+    long blockSamples_ = 0;
+    std::vector<std::vector<double>> blockMeans_;
 };
 
 //- Collective motion: the kinetic energy in the longest-wavelength modes of the momentum
