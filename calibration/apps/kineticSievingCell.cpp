@@ -14,22 +14,27 @@
 //   forcingWaves      m, periods over the box height (default 1)
 //   layers            layers in y for the profiles (default 16)
 //   output            prefix of the output files (default kineticSievingCell)
-// The forcing sets the flow and the temperature: mode, temperature, shearRate and
-// thermostatTime are refused.
+// The forcing sets the flow and the temperature: mode, temperature, shearRate,
+// thermostatTime and maxEquilibrationTime (the development is equilibrationTime, whole)
+// are refused.
 //
 // Output (text, one header line per column):
 //   <output>-series.dat    t, mixture T about the mean flow's fit, the flow's sine and
-//                          cosine amplitudes, and A: the coarse fraction's mode
-//                          cos(2 k y) (A > 0: coarse in the high-shear layers)
+//                          cosine amplitudes, the solids' and the coarse volume's
+//                          cos(2 k y) modes, and A, the coarse share's: their difference
+//                          (A > 0: coarse over-represented in the high-shear layers, at
+//                          u_x = 0; for c = c0 (1 + A cos 2ky) on uniform solids, A)
 //   <output>-profiles.dat  per layer: y, solids fraction, coarse fraction of the solids,
-//                          u_x, T about the layer's mean velocity, each with its block
-//                          standard error
+//                          u_x, T about the mean flow (interpolated between the layers),
+//                          each with its block standard error
 // The species are taken in the order given; the last one is "coarse" (the largest).
 #include "CellConfig.hpp"
 #include "InitialState.hpp"
 #include "KolmogorovForcing.hpp"
 
 #include "correlation/Statistics.hpp"
+
+#include <memory>
 
 #include <algorithm>
 #include <array>
@@ -52,62 +57,104 @@ std::set<std::string> validKeys()
     return keys;
 }
 
-//- Sums over the particles of one layer at one sample.
-struct LayerSums
+//- One layer at one sample: solids fraction, coarse share of the solids, mean u_x and T.
+struct LayerState
 {
-    VelocityChunkSums::Totals velocity{};   // mass, m v, v, |v|^2 (Driving.hpp layout)
-    int count = 0;
-    double solidsVolume = 0;
-    double coarseVolume = 0;
+    double solidsFraction = 0, coarseShare = 0, velocity = 0, temperature = 0;
 };
 
-std::vector<LayerSums> layerSums(const Simulation& sim, int layers, int coarse)
+//- The layers' state now. T is taken about the mean flow interpolated linearly in y
+//  between the layers' centres (periodic), not about each layer's mean: the shear inside
+//  a layer would add (gammaDot h)^2/12 to T, a tenth of it in the high-shear layers.
+std::vector<LayerState> layerStates(const Simulation& sim, int layers, int coarse)
 {
     const Particles& p = sim.particles();
-    const double ly = sim.box().ly;
-    std::vector<LayerSums> sums(static_cast<std::size_t>(layers));
-    for (std::size_t i = 0; i < p.size(); ++i)
+    const double ly = sim.box().ly, h = ly/layers;
+    const std::size_t n = p.size(), nl = std::size_t(layers);
+    std::vector<int> layer(n);
+    std::vector<double> mass(nl), momentum(nl * 3), volume(nl), coarseVolume(nl), count(nl);
+    for (std::size_t i = 0; i < n; ++i)
     {
-        const int l = std::min(layers - 1, int(p.y[i]/ly*layers));
-        LayerSums& s = sums[std::size_t(l)];
-        const double vx = p.vx[i], vy = p.vy[i], vz = p.vz[i];
-        double* t = s.velocity.data();
-        t[0] += p.mass[i]; t[1] += p.mass[i]*vx; t[2] += p.mass[i]*vy; t[3] += p.mass[i]*vz;
-        t[4] += vx; t[5] += vy; t[6] += vz; t[7] += vx*vx + vy*vy + vz*vz;
-        const double volume = 4.0/3.0*M_PI*std::pow(p.radius[i], 3);
-        s.solidsVolume += volume;
-        ++s.count;
-        if (p.species[i] == coarse) s.coarseVolume += volume;
+        const int l = std::min(layers - 1, int(p.y[i]/h));
+        layer[i] = l;
+        const std::size_t L = std::size_t(l);
+        mass[L] += p.mass[i];
+        momentum[3*L] += p.mass[i]*p.vx[i];
+        momentum[3*L + 1] += p.mass[i]*p.vy[i];
+        momentum[3*L + 2] += p.mass[i]*p.vz[i];
+        const double v = 4.0/3.0*M_PI*std::pow(p.radius[i], 3);
+        volume[L] += v;
+        if (p.species[i] == coarse) coarseVolume[L] += v;
+        count[L] += 1;
     }
-    return sums;
+    std::vector<LayerState> state(nl);
+    std::vector<double> mean(nl * 3);
+    for (std::size_t l = 0; l < nl; ++l)
+    {
+        for (int a = 0; a < 3; ++a) mean[3*l + a] = mass[l] > 0 ? momentum[3*l + a]/mass[l] : 0;
+        state[l].solidsFraction = volume[l]/(sim.box().volume()/layers);
+        state[l].coarseShare = volume[l] > 0 ? coarseVolume[l]/volume[l] : 0;
+        state[l].velocity = mean[3*l];
+    }
+    std::vector<double> sumC2(nl);
+    for (std::size_t i = 0; i < n; ++i)
+    {
+        // the flow at y_i: between the centres of the layer below and above (periodic)
+        const double s = p.y[i]/h - 0.5;
+        const int below = int(std::floor(s));
+        const double w = s - below;
+        const std::size_t lo = std::size_t((below + layers) % layers);
+        const std::size_t hi = std::size_t((below + 1 + layers) % layers);
+        double c2 = 0;
+        for (int a = 0; a < 3; ++a)
+        {
+            const double v = a == 0 ? p.vx[i] : a == 1 ? p.vy[i] : p.vz[i];
+            const double u = (1 - w)*mean[3*lo + std::size_t(a)] + w*mean[3*hi + std::size_t(a)];
+            c2 += (v - u)*(v - u);
+        }
+        sumC2[std::size_t(layer[i])] += c2;
+    }
+    for (std::size_t l = 0; l < nl; ++l)
+    {
+        state[l].temperature = count[l] > 0 ? sumC2[l]/count[l] : 0;
+    }
+    return state;
 }
 
 //- One line of the series: the mean flow's Fourier amplitudes, T about the fitted flow,
-//  the coarse fraction's cos(2 k y) mode.
+//  the cos(2 k y) modes of the solids' and of the coarse species' volume distributions
+//  (2 <cos 2ky> over each: the layers' solids fraction varies with the shear rate too, so
+//  the coarse share's mode is the difference).
 struct SeriesPoint
 {
-    double sine = 0, cosine = 0, temperature = 0, segregation = 0;
+    double sine = 0, cosine = 0, temperature = 0, solidsMode = 0, coarseMode = 0;
 };
 
 SeriesPoint seriesPoint(const Simulation& sim, double k, int coarse)
 {
     const Particles& p = sim.particles();
     const int n = int(p.size());
-    double mass = 0, ms = 0, mc = 0, volume = 0, coarseCos = 0;
+    double mass = 0, ms = 0, mc = 0, volume = 0, solidsCos = 0, coarseVolume = 0, coarseCos = 0;
     for (int i = 0; i < n; ++i)
     {
         mass += p.mass[i];
         ms += p.mass[i]*p.vx[i]*std::sin(k*p.y[i]);
         mc += p.mass[i]*p.vx[i]*std::cos(k*p.y[i]);
-        const double v = std::pow(p.radius[i], 3);
+        const double v = std::pow(p.radius[i], 3), c2 = std::cos(2*k*p.y[i]);
         volume += v;
-        if (p.species[i] == coarse) coarseCos += v*std::cos(2*k*p.y[i]);
+        solidsCos += v*c2;
+        if (p.species[i] == coarse)
+        {
+            coarseVolume += v;
+            coarseCos += v*c2;
+        }
     }
     SeriesPoint s;
     // u_x(y) = sine sin(k y) + cosine cos(k y): projections of a uniform mass density
     s.sine = 2*ms/mass;
     s.cosine = 2*mc/mass;
-    s.segregation = 2*coarseCos/volume;
+    s.solidsMode = 2*solidsCos/volume;
+    s.coarseMode = coarseVolume > 0 ? 2*coarseCos/coarseVolume : 0;
     double sum = 0;
     for (int i = 0; i < n; ++i)
     {
@@ -125,7 +172,8 @@ void refuse(const CellConfig& config, const std::string& key)
         throw std::invalid_argument
         (
             "entry '" + key + "' is not used by the Kolmogorov cell: the forcing"
-            " (forcingAmplitude, forcingWaves) sets the flow and the temperature"
+            " (forcingAmplitude, forcingWaves) sets the flow and the temperature, and"
+            " equilibrationTime is the whole development before the sampling"
         );
     }
 }
@@ -149,18 +197,44 @@ int main(int argc, char** argv)
     try
     {
         const CellConfig config = readCellConfig(argv[1], argc, argv, 2, validKeys());
-        for (const char* key : {"mode", "temperature", "shearRate", "thermostatTime"})
+        for (const char* key : {"mode", "temperature", "shearRate", "thermostatTime", "maxEquilibrationTime"})
         {
             refuse(config, key);
         }
+        if (!config.count("forcingAmplitude"))
+        {
+            throw std::invalid_argument("entry 'forcingAmplitude' missing: the body force's amplitude a0 [m/s^2]");
+        }
         CellRunSettings settings = cellRunSettingsFrom(config);
         settings.simulation.mode = CellMode::nve;
+        if (!config.count("label")) settings.label = "kolmogorov";
         validateCellRunSettings(settings);
         if (settings.species.size() < 2)
         {
             throw std::invalid_argument("entry 'species': the sieving cell needs two species (fine, coarse)");
         }
+        for (std::size_t s = 0; s + 1 < settings.species.size(); ++s)
+        {
+            if (!(settings.species[s].diameter < settings.species.back().diameter))
+            {
+                throw std::invalid_argument
+                (
+                    "entry 'species': the last species is taken for the coarse one and must be"
+                    " the largest ('" + settings.species[s].name + "' is not smaller than '"
+                  + settings.species.back().name + "')"
+                );
+            }
+        }
         const double amplitude = configNumber(config, "forcingAmplitude", 0);
+        if (!std::isfinite(amplitude) || !(amplitude > 0))
+        {
+            // before the packing (KolmogorovForcing says the same once the box is known)
+            throw std::invalid_argument
+            (
+                "entry 'forcingAmplitude' must be finite and positive [m/s^2], got "
+              + config.at("forcingAmplitude")
+            );
+        }
         const double wavesValue = configNumber(config, "forcingWaves", 1);
         const double layersValue = configNumber(config, "layers", 16);
         if (wavesValue != std::floor(wavesValue) || wavesValue < 1 || wavesValue > 1000)
@@ -203,15 +277,16 @@ int main(int argc, char** argv)
         const long blockSteps =
             std::max(sampleEvery, std::lround(settings.samplingTime/settings.blocks/dt)/sampleEvery*sampleEvery);
         // about 2000 lines, on the samples' grid
-        const long seriesEvery =
-            std::max(1L, (equilibrationSteps + settings.blocks*blockSteps)/2000/sampleEvery)*sampleEvery;
+        const long seriesSamples =
+            std::max(1L, (equilibrationSteps + settings.blocks*blockSteps)/2000/sampleEvery);
+        const long seriesEvery = seriesSamples*sampleEvery;
         std::cout << "Kolmogorov cell: " << sim.particles().size() << " particles, box "
                   << sim.box().lx << " m, dt " << dt << " s, a0 " << amplitude
                   << " m/s^2, k " << k << " 1/m; " << equilibrationSteps << " steps to the steady state, "
                   << settings.blocks << " blocks of " << blockSteps << " steps\n";
 
         std::ofstream series(output + "-series.dat");
-        series << "# t[s] T[m2/s2] uSine[m/s] uCosine[m/s] coarseModeCos2ky[-]\n"
+        series << "# t[s] T[m2/s2] uSine[m/s] uCosine[m/s] solidsMode coarseMode A=coarseMode-solidsMode\n"
                << std::setprecision(8);
         auto writeSeries = [&](const Simulation& s)
         {
@@ -221,7 +296,8 @@ int main(int argc, char** argv)
                 throw std::runtime_error("Kolmogorov cell: the flow is not finite at t = " + std::to_string(s.time()));
             }
             series << s.time() << ' ' << p.temperature << ' ' << p.sine << ' ' << p.cosine
-                   << ' ' << p.segregation << '\n';
+                   << ' ' << p.solidsMode << ' ' << p.coarseMode << ' '
+                   << p.coarseMode - p.solidsMode << '\n';
         };
         writeSeries(sim);
         sim.run(equilibrationSteps, writeSeries, seriesEvery, settings.progressEvery, settings.label + " development");
@@ -234,25 +310,23 @@ int main(int argc, char** argv)
         (
             nColumns, std::vector<std::vector<double>>(std::size_t(layers))
         );
-        const double layerVolume = sim.box().volume()/layers;
+        long samplesTaken = 0;
         for (int b = 0; b < blocks; ++b)
         {
             std::vector<std::array<double, nColumns>> sum(std::size_t(layers), {0, 0, 0, 0});
             long samples = 0;
             auto sample = [&](const Simulation& s)
             {
-                const std::vector<LayerSums> sums = layerSums(s, layers, coarse);
-                for (std::size_t l = 0; l < sums.size(); ++l)
+                const std::vector<LayerState> state = layerStates(s, layers, coarse);
+                for (std::size_t l = 0; l < state.size(); ++l)
                 {
-                    const LayerSums& ls = sums[l];
-                    double u[3];
-                    sum[l][phiColumn] += ls.solidsVolume/layerVolume;
-                    sum[l][coarseColumn] += ls.solidsVolume > 0 ? ls.coarseVolume/ls.solidsVolume : 0;
-                    sum[l][temperatureColumn] += temperatureAboutMean(ls.velocity, ls.count, u);
-                    sum[l][velocityColumn] += u[0];
+                    sum[l][phiColumn] += state[l].solidsFraction;
+                    sum[l][coarseColumn] += state[l].coarseShare;
+                    sum[l][velocityColumn] += state[l].velocity;
+                    sum[l][temperatureColumn] += state[l].temperature;
                 }
                 ++samples;
-                if (s.stepCount() % seriesEvery == 0) writeSeries(s);
+                if (++samplesTaken % seriesSamples == 0) writeSeries(s);
             };
             sim.run
             (

@@ -111,43 +111,42 @@ StressProductIntegrals stressProductIntegrals
     return result;
 }
 
-std::vector<LaggedCorrelation> aboutBlockMeans
+std::vector<LaggedCorrelation> aboutMeans
 (
     std::vector<LaggedCorrelation> blocks,
     const std::vector<std::vector<double>>& blockMeans,
-    std::size_t seriesCount
+    const std::vector<double>& runMeans
 )
 {
+    const std::size_t n = runMeans.size();
     if (blockMeans.size() != blocks.size())
     {
         throw std::invalid_argument
         (
-            "aboutBlockMeans: " + std::to_string(blocks.size()) + " blocks but "
+            "aboutMeans: " + std::to_string(blocks.size()) + " blocks but "
           + std::to_string(blockMeans.size()) + " block means"
         );
     }
     for (std::size_t b = 0; b < blocks.size(); ++b)
     {
-        const std::vector<double>& m = blockMeans[b];
+        const std::vector<double>& mb = blockMeans[b];
         Eigen::ArrayXXd& values = blocks[b].values;
-        if
-        (
-            m.size() != seriesCount
-         || values.cols() != static_cast<Eigen::Index>(seriesCount * seriesCount)
-        )
+        if (mb.size() != n || values.cols() != static_cast<Eigen::Index>(n * n))
         {
             throw std::invalid_argument
             (
-                "aboutBlockMeans: block " + std::to_string(b) + " has "
-              + std::to_string(m.size()) + " means and " + std::to_string(values.cols())
-              + " columns for " + std::to_string(seriesCount) + " series"
+                "aboutMeans: block " + std::to_string(b) + " has " + std::to_string(mb.size())
+              + " means and " + std::to_string(values.cols()) + " columns for "
+              + std::to_string(n) + " series"
             );
         }
-        for (std::size_t i = 0; i < seriesCount; ++i)
+        const std::vector<double>& m = runMeans;
+        for (std::size_t i = 0; i < n; ++i)
         {
-            for (std::size_t j = 0; j < seriesCount; ++j)
+            for (std::size_t j = 0; j < n; ++j)
             {
-                values.col(static_cast<Eigen::Index>(i * seriesCount + j)) -= m[i] * m[j];
+                values.col(static_cast<Eigen::Index>(i * n + j)) -=
+                    m[i] * mb[j] + mb[i] * m[j] - m[i] * m[j];
             }
         }
     }

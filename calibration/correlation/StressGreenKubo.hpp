@@ -50,18 +50,23 @@ StressProductIntegrals stressProductIntegrals
     const PlateauSettings& settings = PlateauSettings()
 );
 
-//- The blocks' product correlations about their means: C_ij(t) - m_i m_j in each block,
-//  m_i the block's mean of series i (blockMeans[block][i]). A sheared cell's shear stress
-//  has a mean (its rheology): <s_i(0) s_j(t)> then tends to m_i m_j, not to zero, and the
-//  Green-Kubo integral of the raw products grows with t instead of reaching a plateau.
-//  Subtracting the block's own mean leaves a bias of order (correlation time / block
-//  length) of the fluctuations' integral, the standard estimator's. Throws
+//- The blocks' product correlations about the series' means. A sheared cell's shear
+//  stress has a mean (its rheology): correlated raw, <s_i(0) s_j(t)> tends to m_i m_j,
+//  not to zero, and the Green-Kubo integral grows with t instead of reaching a plateau.
+//  With a = m_i + da, b = m_j + db, a block's raw product is m_i m_j + m_i <db> +
+//  m_j <da> + <da db>: the run's mean m-hat (runMeans) removes the constant, each block's
+//  own means mb (blockMeans[block]) the linear terms, whose block-to-block noise m <d>
+//  would otherwise swamp the errors:
+//      C_ij(t) - m-hat_i mb_j - mb_i m-hat_j + m-hat_i m-hat_j.
+//  Left: terms of second order in the run mean's error and in the blocks' edges (the
+//  origins of lag t span the block less t). Subtracting each block's mean outright would
+//  lower the running integral by about 2 I t/T_block instead. Throws
 //  std::invalid_argument when the counts of blocks or series do not match.
-std::vector<LaggedCorrelation> aboutBlockMeans
+std::vector<LaggedCorrelation> aboutMeans
 (
     std::vector<LaggedCorrelation> blocks,
     const std::vector<std::vector<double>>& blockMeans,
-    std::size_t seriesCount
+    const std::vector<double>& runMeans
 );
 
 //- The seed's rule for a binary mixture, series ordered (J^1, J^2, J^12):

@@ -72,6 +72,11 @@ public:
     //  temperature and stresses are taken about the mass-weighted mean velocity.
     virtual bool aboutStreamingVelocity() const { return false; }
 
+    //- A speed the driving gives the particles [m/s] (0: none beyond the settings' target
+    //  T and shear): the blow-up check's reference energy includes 1/2 M scale^2, so a
+    //  driving that feeds a mean flow does not trip it (Simulation::setDriving).
+    virtual double velocityScale() const { return 0; }
+
     // --- the force pass's finish (second half kick)
     //- Before a force pass; endsStep: the pass finishes the step's velocities particle by
     //  particle. Returns whether finishRange wants the final velocities.

@@ -21,6 +21,8 @@
 
 #include "Driving.hpp"
 
+#include <cmath>
+
 namespace sdf::dem
 {
 
@@ -33,6 +35,9 @@ public:
 
     std::string name() const override { return "kolmogorov"; }
     void afterStep(Particles& particles, int nThreads) override;
+    //- sqrt(a0/k): the speed the force gives over a 1/k of the box (a flow a thousand
+    //  times more energetic than this is taken for a blow-up)
+    double velocityScale() const override { return std::sqrt(amplitude_/wavenumber_); }
 
     //- Body force per unit mass at height y [m/s^2].
     double acceleration(double y) const;

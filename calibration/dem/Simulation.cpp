@@ -242,6 +242,11 @@ void Simulation::setDriving(std::unique_ptr<Driving> driving)
         throw std::invalid_argument(msg.str());
     }
     driving_ = std::move(driving);
+    // the blow-up check's reference: also the driving's own speed
+    double massSum = 0;
+    for (double m : particles_.mass) massSum += m;
+    const double scale = driving_->velocityScale();
+    referenceEnergy_ = std::max(referenceEnergy_, 0.5*massSum*scale*scale);
 }
 
 SimulationState Simulation::exportState() const

@@ -336,6 +336,12 @@ std::string settingsKey(const dem::CellRunSettings& b, const std::string& contac
     {
         key << "; mode " << dem::cellModeName(sim.mode);
     }
+    // a sheared cell's eta: its stress products are correlated about the run's mean
+    // (before, raw: such stores' eta grew with the window and are not reused)
+    if (sim.mode == dem::CellMode::leesEdwards)
+    {
+        key << "; stress ACF about the mean";
+    }
     return key.str();
 }
 

@@ -105,6 +105,15 @@ TEST(Checkpoint, CellRunResumedGivesTheUninterruptedResult)
     EXPECT_EQ(resumed.collisions.counts, reference.collisions.counts);
     EXPECT_EQ(resumed.collisions.histogram, reference.collisions.histogram);
     EXPECT_EQ(resumed.stressIntegrals.crossToProductRatio, reference.stressIntegrals.crossToProductRatio);
+    EXPECT_EQ(resumed.stressIntegrals.total.integral.value, reference.stressIntegrals.total.integral.value);
+    ASSERT_EQ(resumed.kineticSieving.size(), reference.kineticSieving.size());
+    for (std::size_t k = 0; k < reference.kineticSieving.size(); ++k)
+    {
+        // the stress products about the means: the open block's sums and the closed
+        // blocks' means come back bit for bit
+        EXPECT_EQ(resumed.kineticSieving[k].value, reference.kineticSieving[k].value);
+        EXPECT_EQ(resumed.kineticSievingWithCrossTerms[k].value, reference.kineticSievingWithCrossTerms[k].value);
+    }
 
     // a checkpoint of other sampling settings is refused
     CellRunSettings other = second;

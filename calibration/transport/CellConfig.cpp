@@ -179,7 +179,23 @@ CellRunSettings cellRunSettingsFrom(const CellConfig& c)
         {
             throw std::invalid_argument("entry 'species': expected name:diameter:density, got '" + token + "'");
         }
-        s.species.push_back({name, std::stod(d), std::stod(rho)});
+        double diameter = 0, density = 0;
+        try
+        {
+            std::size_t usedD = 0, usedRho = 0;
+            diameter = std::stod(d, &usedD);
+            density = std::stod(rho, &usedRho);
+            if (usedD != d.size() || usedRho != rho.size()) throw std::invalid_argument("");
+        }
+        catch (const std::exception&)
+        {
+            throw std::invalid_argument
+            (
+                "entry 'species': '" + token + "': diameter and density must be numbers"
+                " (name:diameter:density)"
+            );
+        }
+        s.species.push_back({name, diameter, density});
     }
     if (c.count("volumeFractions"))
     {

@@ -300,8 +300,8 @@ void readCellCheckpoint
         throw std::runtime_error
         (
             "checkpoint '" + f + "': not a CellRun checkpoint of this version (format '"
-          + checkpointFormat + "'; one written before the collective-motion measurement"
-            " cannot be resumed: start the run again)"
+          + checkpointFormat + "'; one written before the stress series' block means or"
+            " the collective-motion measurement cannot be resumed: start the run again)"
         );
     }
     if (needInt("cellRun_totalSteps") != plan.totalSteps || needInt("cellRun_sampleEvery") != settings.sampleEvery)

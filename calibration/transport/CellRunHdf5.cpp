@@ -157,7 +157,12 @@ void writeStress(const io::Group& stress, const CellRunResult& r)
         names += (k ? " " : "") + r.stressSeriesNames[k];
     }
     stress.setAttribute("series", names);
-    stress.setAttribute("definition", "s_k = J_xy^k / sqrt(V); integrals of <s_i(0) s_j(t)>");
+    stress.setAttribute
+    (
+        "definition",
+        "s_k = J_xy^k / sqrt(V); integrals of <s_i(0) s_j(t)> about the means (the run's,"
+        " each block's in the linear terms: correlation::aboutMeans)"
+    );
     stress.writeVector("meanShearStress", r.meanStress);
     if (!r.stressIntegrals.terms.empty())
     {

@@ -465,6 +465,14 @@ void StressAutocorrelation::load(const io::Checkpoint& c, const std::string& f)
         blockMeans_.emplace_back(closed.begin() + long(b*n), closed.begin() + long((b + 1)*n));
     }
     loadCorrelator(c, "cellRun_stress", "", f, correlator_);
+    if (blockMeans_.size() != correlator_.blocks().size())
+    {
+        throw std::invalid_argument
+        (
+            "checkpoint '" + f + "': " + std::to_string(blockMeans_.size()) + " stress block means"
+            " for " + std::to_string(correlator_.blocks().size()) + " correlator blocks"
+        );
+    }
 }
 
 void StressAutocorrelation::finish(CellRunResult& result, long samples) const
@@ -472,10 +480,13 @@ void StressAutocorrelation::finish(CellRunResult& result, long samples) const
     result.meanStress = stressSum_;
     for (double& m : result.meanStress) m /= std::max(1L, samples);
     if (correlator_.blocks().size() < 2) return;
-    // about each block's mean: a sheared cell's shear stress has one
+    // about the means (a sheared cell's shear stress has one): the run's, in the series'
+    // units J/sqrt(V), with each block's own in the linear terms
+    std::vector<double> runMean = result.meanStress;
+    for (double& m : runMean) m *= std::sqrt(volume_);
     result.stressIntegrals = correlation::stressProductIntegrals
     (
-        correlation::aboutBlockMeans(correlator_.blocks(), blockMeans_, parts_.size()),
+        correlation::aboutMeans(correlator_.blocks(), blockMeans_, runMean),
         plan_.sampleInterval, parts_.size(), plateauSettings(plan_)
     );
     if (result.settings.species.size() == 2)
