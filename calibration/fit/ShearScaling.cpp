@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <set>
+#include <sstream>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -16,15 +17,24 @@ namespace sdf::fit
 namespace
 {
 
-void check(bool ok, std::size_t row, const char* entry, double value, const char* what)
+//- Names the condition by its row and its phi, x and gammaDot (the store's names
+//  carry the same three)
+void check
+(
+    bool ok,
+    std::size_t row,
+    const ShearedObservation& o,
+    const char* entry,
+    double value,
+    const char* what
+)
 {
     if (!ok)
     {
-        throw std::invalid_argument
-        (
-            "shear scaling: row " + std::to_string(row) + ", " + entry + " = "
-          + std::to_string(value) + " " + what
-        );
+        std::ostringstream msg;
+        msg << "shear scaling: condition " << row << " (phi " << o.phi << ", x " << o.x
+            << ", gammaDot " << o.gammaDot << "): " << entry << " = " << value << " " << what;
+        throw std::invalid_argument(msg.str());
     }
 }
 
@@ -101,15 +111,15 @@ ShearScaling shearScaling(const std::vector<ShearedObservation>& rows)
         };
         for (const auto& e : entries)
         {
-            check(std::isfinite(e.second), i, e.first, e.second, "is not finite");
+            check(std::isfinite(e.second), i, o, e.first, e.second, "is not finite");
         }
-        check(o.phi > 0 && o.phi < 1, i, "phi", o.phi, "must be in (0, 1)");
-        check(o.x >= 0 && o.x <= 1, i, "x", o.x, "must be in [0, 1]");
-        check(o.gammaDot > 0, i, "gammaDot", o.gammaDot, "must be > 0 [1/s]");
-        check(o.T > 0, i, "T", o.T, "must be > 0 [m2/s2]");
-        check(o.dMean > 0, i, "dMean", o.dMean, "must be > 0 [m]");
-        check(o.D > 0, i, "D", o.D, "must be > 0 [m2/s]");
-        check(o.DError > 0, i, "DError", o.DError, "must be > 0 [m2/s]");
+        check(o.phi > 0 && o.phi < 1, i, o, "phi", o.phi, "must be in (0, 1)");
+        check(o.x >= 0 && o.x <= 1, i, o, "x", o.x, "must be in [0, 1]");
+        check(o.gammaDot > 0, i, o, "gammaDot", o.gammaDot, "must be > 0 [1/s]");
+        check(o.T > 0, i, o, "T", o.T, "must be > 0 [m2/s2]");
+        check(o.dMean > 0, i, o, "dMean", o.dMean, "must be > 0 [m]");
+        check(o.D > 0, i, o, "D", o.D, "must be > 0 [m2/s]");
+        check(o.DError > 0, i, o, "DError", o.DError, "must be > 0 [m2/s]");
         const double scale = o.gammaDot*o.dMean*o.dMean;
         s.C.push_back(o.D/scale);
         s.CError.push_back(o.DError/scale);

@@ -297,7 +297,17 @@ StoredResult extrapolatedResult(const std::vector<StoredResult>& cells)
         rows.push_back({scalar(c.cond.particles), c.D, c.DError});
         r.DNotConverged = r.DNotConverged || c.DNotConverged;
     }
-    r.finiteSize = sdf::fit::extrapolateInverseCubeRoot(rows);
+    try
+    {
+        r.finiteSize = sdf::fit::extrapolateInverseCubeRoot(rows);
+    }
+    catch (const std::exception& err)
+    {
+        // name the point (the library knows its rows only)
+        std::ostringstream msg;
+        msg << "point phi " << r.cond.phi << " x " << r.cond.x << ": " << err.what();
+        throw std::invalid_argument(msg.str());
+    }
     r.cells = cells;
     r.cond.particles = 0;   // the point, no longer one cell
     r.D = r.finiteSize->value;
