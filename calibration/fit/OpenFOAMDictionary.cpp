@@ -94,6 +94,10 @@ void writeCoefficient(std::ostream& os, const CalibratedCoefficient& entry)
     {
         os << in1 << key("gammaDotRange") << range(*fit.envelope.gammaDot) << ";\n";
     }
+    for (const auto& [name, value] : entry.provenance)
+    {
+        os << in1 << key(name) << value << ";\n";
+    }
     if (entry.selection)
     {
         const ModelSelection& s = *entry.selection;

@@ -11,6 +11,7 @@
 #include <optional>
 #include <ostream>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace sdf::fit
@@ -24,6 +25,9 @@ struct CalibratedCoefficient
     std::string coefficient;
     FitResult fit;
     std::optional<ModelSelection> selection;
+    //- Choices the coefficient depends on beyond its law and data, written as
+    //  `key value;` (eta: sievingAttribution seed|crossTerms)
+    std::vector<std::pair<std::string, std::string>> provenance{};
 };
 
 //- Writes the FoamFile header and one sub-dictionary per coefficient, and for

@@ -896,7 +896,7 @@ void Foam::fitAndReport
             options.space = sdf::fit::FitSpace::linear;
         }
 
-        const sdf::fit::CalibratedCoefficient chosen = fitCoefficient
+        sdf::fit::CalibratedCoefficient chosen = fitCoefficient
         (
             coeff,
             isD
@@ -908,6 +908,10 @@ void Foam::fitAndReport
             options,
             settings
         );
+        if (!isD)
+        {
+            chosen.provenance.push_back({"sievingAttribution", settings.sievingAttribution()});
+        }
         if (isD) bestD = chosen.fit; else bestEta = chosen.fit;
         calibrated.push_back(chosen);
     }

@@ -100,7 +100,8 @@ Calibration seedLikeCalibration()
 
 TEST(Dictionary, WritesEveryEntryAndTheNumbersReadBack)
 {
-    const Calibration calibration = seedLikeCalibration();
+    Calibration calibration = seedLikeCalibration();
+    calibration.coefficients[1].provenance = {{"sievingAttribution", "crossTerms"}};
     std::ostringstream os;
     writeOpenFOAMDictionary(os, calibration.coefficients);
     const std::string text = os.str();
@@ -165,6 +166,9 @@ TEST(Dictionary, WritesEveryEntryAndTheNumbersReadBack)
     EXPECT_NEAR(number(eta, "p"), calibration.coefficients[1].fit.parameter("p").value, 1e-9);
     EXPECT_FALSE(entry(eta, "gammaDotRange").empty());
     EXPECT_TRUE(block(eta, "selection").empty());
+    // the attribution rule eta was fitted with, in eta's dictionary only
+    EXPECT_EQ(entry(eta, "sievingAttribution"), "crossTerms");
+    EXPECT_TRUE(entry(D, "sievingAttribution").empty());
 }
 
 TEST(Dictionary, RefusesBadCoefficientNames)
