@@ -34,14 +34,13 @@
 
 #include "correlation/Statistics.hpp"
 
-#include <memory>
-
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <fstream>
 #include <iomanip>
 #include <iostream>
+#include <memory>
 #include <set>
 #include <stdexcept>
 
