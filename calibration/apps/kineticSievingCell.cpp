@@ -29,7 +29,6 @@
 //                          each with its block standard error
 // The species are taken in the order given; the last one is "coarse" (the largest).
 #include "CellConfig.hpp"
-#include "InitialState.hpp"
 #include "KolmogorovForcing.hpp"
 
 #include "correlation/Statistics.hpp"
@@ -177,13 +176,6 @@ void refuse(const CellConfig& config, const std::string& key)
     }
 }
 
-//- Mean and block standard error of the per-block values.
-std::pair<double, double> blockMean(const std::vector<double>& values)
-{
-    const sdf::correlation::Estimate e = sdf::correlation::meanAndStandardError(values);
-    return {e.value, e.standardError};
-}
-
 } // namespace
 
 int main(int argc, char** argv)
@@ -248,18 +240,9 @@ int main(int argc, char** argv)
         const std::string output = configText(config, "output", "kineticSievingCell");
         const int coarse = int(settings.species.size()) - 1;
 
-        PackingSettings ps;
-        ps.solidsFraction = settings.solidsFraction;
-        ps.counts = countsFromVolumeFractions(settings.species, settings.volumeFractions, settings.particles);
-        ps.seed = settings.seed;
-        Packing packing = makePacking(settings.species, ps);
-        double dMean = 0;
-        for (std::size_t s = 0; s < settings.species.size(); ++s)
-        {
-            dMean += settings.volumeFractions[s]*settings.species[s].diameter;
-        }
-        // a start well below the sheared state's temperature (the forcing heats the cell)
-        assignVelocities(packing.particles, packing.box, 0.01*amplitude*dMean, 0, settings.seed);
+        // a start well below the sheared state's temperature (the forcing heats the cell);
+        // mode nve: no streaming profile
+        const Packing packing = initialCell(settings, 0.01*amplitude*meanDiameter(settings));
         SimulationSettings simSettings = settings.simulation;
         simSettings.renumberEvery = 1000;
         Simulation sim(settings.species, simSettings, packing.particles, packing.box);
@@ -354,8 +337,9 @@ int main(int argc, char** argv)
             profiles << (l + 0.5)*sim.box().ly/layers;
             for (int col = 0; col < nColumns; ++col)
             {
-                const auto [mean, error] = blockMean(blockMeans[col][std::size_t(l)]);
-                profiles << ' ' << mean << ' ' << error;
+                const sdf::correlation::Estimate e =
+                    sdf::correlation::meanAndStandardError(blockMeans[col][std::size_t(l)]);
+                profiles << ' ' << e.value << ' ' << e.standardError;
             }
             profiles << '\n';
         }

@@ -131,18 +131,6 @@ void measureThreadScaling
     }
 }
 
-//- Mean diameter weighted by solids volume.
-double meanDiameter(const CellRunSettings& settings)
-{
-    double sum = 0, wsum = 0;
-    for (std::size_t s = 0; s < settings.species.size(); ++s)
-    {
-        sum += settings.volumeFractions[s]*settings.species[s].diameter;
-        wsum += settings.volumeFractions[s];
-    }
-    return sum/wsum;
-}
-
 //- Initial temperature: the given one, else (gammaDot d_mean)^2 if sheared, else the
 //  thermostat's target.
 double initialTemperature(const CellRunSettings& settings, double dMean)
@@ -152,32 +140,6 @@ double initialTemperature(const CellRunSettings& settings, double dMean)
     return sim.mode == CellMode::leesEdwards
         ? std::pow(sim.shearRate*dMean, 2)
         : sim.targetTemperature;
-}
-
-//- Packing at the solids fraction with Maxwellian velocities at T0 (plus the streaming
-//  profile if sheared); written as a LAMMPS data file if asked.
-Packing initialCell(const CellRunSettings& settings, double T0)
-{
-    PackingSettings ps;
-    ps.solidsFraction = settings.solidsFraction;
-    ps.counts = countsFromVolumeFractions
-    (
-        settings.species, settings.volumeFractions, settings.particles
-    );
-    ps.seed = settings.seed;
-    Packing packing = makePacking(settings.species, ps);
-    const SimulationSettings& sim = settings.simulation;
-    const double shearRate = sim.mode == CellMode::leesEdwards ? sim.shearRate : 0.0;
-    assignVelocities(packing.particles, packing.box, T0, shearRate, settings.seed);
-    if (!settings.lammpsDataFile.empty())
-    {
-        writeLammpsData
-        (
-            settings.lammpsDataFile, packing.particles, packing.box, settings.species,
-            0.5*shearRate*packing.box.ly
-        );
-    }
-    return packing;
 }
 
 //- Windows of equilibrationTime/4; equilibrated when the mean T of two consecutive windows
@@ -395,6 +357,41 @@ bool sample
 }
 
 } // namespace
+
+double meanDiameter(const CellRunSettings& settings)
+{
+    double sum = 0, wsum = 0;
+    for (std::size_t s = 0; s < settings.species.size(); ++s)
+    {
+        sum += settings.volumeFractions[s]*settings.species[s].diameter;
+        wsum += settings.volumeFractions[s];
+    }
+    return sum/wsum;
+}
+
+Packing initialCell(const CellRunSettings& settings, double T0)
+{
+    PackingSettings ps;
+    ps.solidsFraction = settings.solidsFraction;
+    ps.counts = countsFromVolumeFractions
+    (
+        settings.species, settings.volumeFractions, settings.particles
+    );
+    ps.seed = settings.seed;
+    Packing packing = makePacking(settings.species, ps);
+    const SimulationSettings& sim = settings.simulation;
+    const double shearRate = sim.mode == CellMode::leesEdwards ? sim.shearRate : 0.0;
+    assignVelocities(packing.particles, packing.box, T0, shearRate, settings.seed);
+    if (!settings.lammpsDataFile.empty())
+    {
+        writeLammpsData
+        (
+            settings.lammpsDataFile, packing.particles, packing.box, settings.species,
+            0.5*shearRate*packing.box.ly
+        );
+    }
+    return packing;
+}
 
 CellRunResult runCell(const CellRunSettings& settings)
 {

@@ -11,6 +11,7 @@
 // LAMMPS data file in CellRunOutput.cpp, checkpoints of a Simulation in
 // SimulationCheckpoint.hpp.
 
+#include "InitialState.hpp"
 #include "Simulation.hpp"
 
 #include "correlation/DiffusiveRegime.hpp"
@@ -81,6 +82,15 @@ void writeLammpsData
 
 //- Throws std::invalid_argument naming the entry.
 void validateCellRunSettings(const CellRunSettings& settings);
+
+//- Mean diameter of the species weighted by their solids volume fractions.
+double meanDiameter(const CellRunSettings& settings);
+
+//- The cell's packing at its solids fraction with Maxwellian velocities at T0 (plus the
+//  streaming profile if sheared); also written as a LAMMPS data file if
+//  settings.lammpsDataFile is set. runCell's start; other drivers of a Simulation
+//  (apps/kineticSievingCell.cpp) start from it too.
+Packing initialCell(const CellRunSettings& settings, double T0);
 
 struct SpeciesTransport
 {
