@@ -219,7 +219,8 @@ PY
     [ "$(grep -vc '^#' "$dir/postProcessing/calibration/shearScaling.dat")" -eq 4 ] || { echo "shearScaling.dat lacks rows"; return 1; }
 }
 
-# A finite-size calibration (finiteSize { particles (100 200); }): every
+# A finite-size calibration (finiteSize { particles (100 200); }), the larger
+# cells run first (longest expected first): every
 # condition runs at both sizes (store groups <name>_N100, _N200), D of the
 # fines is extrapolated to the infinite cell, D(N) = D_inf - a N^(-1/3): the
 # two-point formula recomputed here from the store gives finiteSize.dat's
@@ -233,6 +234,11 @@ test_calibration_finite_size()
     foamDictionary -entry finiteSize -set "{ particles (100 200); }" "$d" > /dev/null
     calibrateGranularMixture -case "$dir" > "$dir/log" 2>&1 || { tail -30 "$dir/log"; return 1; }
     grep -A3 "^Finite size" "$dir/log"
+    # longest expected first: every N 200 cell starts before any N 100 one, so with two
+    # workers the first seven to finish are N 200 cells
+    local firstDone
+    firstDone=$(grep "done in" "$dir/log" | head -7 | grep -c " N 200)")
+    [ "$firstDone" -eq 7 ] || { echo "the first 7 cells done: $firstDone of N 200 (longest first)"; grep "done in" "$dir/log"; return 1; }
     local h5="$dir/constant/calibration.h5"
     [ "$(h5ls "$h5/conditions" | grep -c "_N100 ")" -eq 8 ] && [ "$(h5ls "$h5/conditions" | grep -c "_N200 ")" -eq 8 ] \
         || { echo "not 8 conditions per size"; h5ls "$h5/conditions"; return 1; }

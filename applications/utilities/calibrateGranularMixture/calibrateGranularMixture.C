@@ -240,7 +240,10 @@ int main(int argc, char *argv[])
             toRun.push_back(i);
         }
     }
-    const std::vector<label> mine(conditionsOfThisRank(conds, toRun));
+    const std::vector<label> mine
+    (
+        longestFirst(conds, conditionsOfThisRank(conds, toRun), settings)
+    );
 
     OSstream& progress = Pstream::parRun() ? Pout : Info();
     const label workers =

@@ -12,6 +12,7 @@
 
 #include "store/Store.hpp"
 
+#include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <condition_variable>
@@ -143,6 +144,44 @@ std::vector<Foam::label> Foam::conditionsOfThisRank
 }
 
 
+double Foam::expectedCost
+(
+    const calibrationCondition& c,
+    const calibrationSettings& settings
+)
+{
+    const sdf::dem::CellRunSettings s =
+        settings.conditionSettings
+        (
+            c.phi, c.x, c.rate(), c.seed, c.name, c.particles
+        );
+    return
+        double(s.particles)*(s.equilibrationTime + s.samplingTime)
+       *(1 + 4*c.phi*c.phi);
+}
+
+
+std::vector<Foam::label> Foam::longestFirst
+(
+    const std::vector<calibrationCondition>& conds,
+    std::vector<label> todo,
+    const calibrationSettings& settings
+)
+{
+    std::vector<double> cost(conds.size(), 0);
+    for (const label i : todo)
+    {
+        cost[i] = expectedCost(conds[i], settings);
+    }
+    std::stable_sort
+    (
+        todo.begin(), todo.end(),
+        [&](label a, label b) { return cost[a] > cost[b]; }
+    );
+    return todo;
+}
+
+
 Foam::label Foam::conditionWorkers
 (
     const calibrationSettings& settings,
@@ -170,7 +209,8 @@ Foam::label Foam::conditionWorkers
     {
         progress
             << conditions << " conditions to run, " << workers
-            << " at once (" << threadsPerCell << " threads per cell, "
+            << " at once (longest expected first; " << threadsPerCell
+            << " threads per cell, "
             << hardwareThreads << " hardware threads"
             << (
                    Pstream::parRun()
@@ -251,6 +291,11 @@ Foam::label Foam::runConditions
     }
 
     label ran = 0;
+    double totalCost = 0, doneCost = 0;
+    for (const label i : todo)
+    {
+        totalCost += expectedCost(conds[i], settings);
+    }
     std::string firstError;
     std::unique_lock<std::mutex> lock(mutex);
     for (;;)
@@ -290,9 +335,13 @@ Foam::label Foam::runConditions
                     store, c.inputs(), f.result
                 );
                 ++ran;
+                doneCost += expectedCost(c, settings);
                 const double total = std::chrono::duration<double>
                     (std::chrono::steady_clock::now() - start).count();
-                const double eta = total/ran*(label(todo.size()) - ran);
+                // the elapsed time per unit of expected cost (the dearest
+                // conditions run first, so a plain count would overestimate)
+                const double eta =
+                    doneCost > 0 ? total/doneCost*(totalCost - doneCost) : 0;
                 const sdf::dem::CellRunResult& r = f.result;
                 progress << where.c_str() << " done in " << fmt(f.seconds).c_str()
                     << " s, ETA " << fmt(eta).c_str()
