@@ -232,6 +232,8 @@ test_calibration_finite_size()
     local d="$dir/system/calibrationDict"
     foamDictionary -entry particles -remove "$d" > /dev/null
     foamDictionary -entry finiteSize -set "{ particles (100 200); }" "$d" > /dev/null
+    # two workers: the order check below does not then depend on timing
+    foamDictionary -entry concurrentConditions -set 2 "$d" > /dev/null
     calibrateGranularMixture -case "$dir" > "$dir/log" 2>&1 || { tail -30 "$dir/log"; return 1; }
     grep -A3 "^Finite size" "$dir/log"
     # longest expected first: every N 200 cell starts before any N 100 one, so with two
