@@ -90,7 +90,8 @@ std::vector<std::size_t> allBlocks(std::size_t count)
 
 // The plateau of the mean running integral of the chosen blocks: the first
 // t_p after which it stays within noiseMultiple standard errors of I(t_p)
-// over [t_p, (1 + windowFactor) t_p]; value = window mean of the mean.
+// over [t_p, (1 + windowFactor) t_p] <= latestTime; value = window mean of
+// the mean.
 Plateau findPlateau
 (
     const std::vector<double>& times,
@@ -99,7 +100,13 @@ Plateau findPlateau
     const PlateauSettings& settings
 )
 {
-    const std::size_t n = times.size();
+    // only the lags up to latestTime (at least two, so that a window exists)
+    std::size_t n = 0;
+    while (n < times.size() && times[n] <= settings.latestTime)
+    {
+        ++n;
+    }
+    n = std::max<std::size_t>(n, std::min<std::size_t>(2, times.size()));
     std::vector<double> I(n), sigma(n), column(chosen.size());
     for (std::size_t k = 0; k < n; ++k)
     {

@@ -11,6 +11,7 @@
 #include "correlation/Statistics.hpp"
 
 #include <cstddef>
+#include <limits>
 #include <vector>
 
 namespace sdf::correlation
@@ -37,6 +38,11 @@ struct PlateauSettings
     double windowFactor = 1.0;
     //- Ignore plateau candidates before this time (e.g. to skip t = 0).
     double earliestTime = 0.0;
+    //- Read the integral at lags up to this time only (the window ends by it). The
+    //  cell run sets the MSD's longest lag, so that Green-Kubo and the Einstein fit
+    //  measure the same lags: past it the few pairs left in a block carry a slow
+    //  tail that the MSD cannot see, and the two would differ by construction.
+    double latestTime = std::numeric_limits<double>::infinity();
 };
 
 struct GreenKuboResult
@@ -48,7 +54,8 @@ struct GreenKuboResult
     //  Ornstein-Uhlenbeck replicas it is honest to slightly conservative.
     Estimate integral;
     double plateauTime = 0.0;   // t_p
-    double windowEnd = 0.0;     // (1 + windowFactor) t_p, clipped to the data
+    double windowEnd = 0.0;     // (1 + windowFactor) t_p, clipped to the data and
+                                // to PlateauSettings::latestTime
     //- false: no time where the integral is flat within its noise (run longer,
     //  or use more blocks); the integral then reports the last window anyway.
     bool plateauFound = false;

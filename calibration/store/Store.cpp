@@ -342,6 +342,9 @@ std::string settingsKey(const dem::CellRunSettings& b, const std::string& contac
     {
         key << "; stress ACF about the mean";
     }
+    // Green-Kubo read within the MSD's lags (before, up to a whole block: such
+    // stores' D can sit above the MSD's by a slow tail, and are not reused)
+    key << "; Green-Kubo within the MSD's lags";
     return key.str();
 }
 

@@ -220,16 +220,18 @@ void VelocityAutocorrelation::finish(CellRunResult& result, long) const
             plateauSettings(plan_)
         );
         // tau_v from lags up to half a block, the MSD's longest
-        const double tauV = correlation::velocityCorrelationTime
-        (
-            first, 0.5*plan_.samplesPerBlock*plan_.sampleInterval
-        );
+        const double longestMsdLag = 0.5*plan_.samplesPerBlock*plan_.sampleInterval;
+        const double tauV = correlation::velocityCorrelationTime(first, longestMsdLag);
+        // ... and the plateau read within the MSD's lags: Green-Kubo and the Einstein
+        // fit then measure the same stretch of the VACF, and differ only if it has not
+        // decayed there (the check's item 3 then says so)
         correlation::PlateauSettings pastDecay = plateauSettings(plan_);
         pastDecay.earliestTime = std::max
         (
             pastDecay.earliestTime,
             correlation::DiffusiveRegimeSettings().windowStartCorrelationTimes*tauV
         );
+        pastDecay.latestTime = longestMsdLag;
         SpeciesTransport& st = result.species[s];
         st.greenKubo = correlation::greenKubo
         (

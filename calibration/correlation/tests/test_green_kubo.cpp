@@ -178,3 +178,52 @@ TEST(GreenKubo, NegativeBackscatteringIsIntegratedNotCutOff)
     EXPECT_NEAR(gk.integral.value, 0.2, 1e-3);
     EXPECT_GT(gk.plateauTime, 2.0);
 }
+
+TEST(GreenKubo, WindowEndsByTheLatestTime)
+{
+    // I(t) = t (a correlation that never decays): without a plateau the integral is
+    // the mean over the latest full window, [t_end / 2, t_end]. Bounded by latestTime
+    // 4 the window is [2, 4] (mean 3); unbounded it is the data's end, [5, 10] (7.5).
+    const std::vector<double> times = uniformTimes(101, 0.1);
+    std::vector<std::vector<double>> blocks;
+    for (int b = 0; b < 5; ++b)
+    {
+        blocks.emplace_back(times.size(), 1.0 + 0.01 * (b - 2));
+    }
+    PlateauSettings bounded;
+    bounded.latestTime = 4.0;
+    const GreenKuboResult gk = greenKubo(times, blocks, bounded);
+    EXPECT_FALSE(gk.plateauFound);
+    EXPECT_NEAR(gk.windowEnd, 4.0, 1e-12);
+    EXPECT_NEAR(gk.plateauTime, 2.0, 1e-12);
+    EXPECT_NEAR(gk.integral.value, 3.0, 1e-9);
+    const GreenKuboResult unbounded = greenKubo(times, blocks);
+    EXPECT_NEAR(unbounded.windowEnd, 10.0, 1e-12);
+    EXPECT_NEAR(unbounded.integral.value, 7.5, 1e-9);
+
+    // exp(-t) with tiny noise: the plateau (I = 1 within 1e-4) comes near t = 9;
+    // with latestTime 3 no window [t_p, 2 t_p] inside 3 is flat, so the integral is
+    // the mean of 1 - exp(-t) over [1.5, 3], flagged, and never read past 3
+    const std::vector<double> fine = uniformTimes(3001, 0.01);
+    std::vector<std::vector<double>> decaying;
+    for (int b = 0; b < 6; ++b)
+    {
+        std::vector<double> c(fine.size());
+        for (std::size_t k = 0; k < c.size(); ++k)
+        {
+            c[k] = std::exp(-fine[k]) * (1.0 + 1e-4 * (b - 2.5));
+        }
+        decaying.push_back(c);
+    }
+    const GreenKuboResult free = greenKubo(fine, decaying);
+    ASSERT_TRUE(free.plateauFound);
+    EXPECT_GT(free.plateauTime, 5.0);
+    EXPECT_NEAR(free.integral.value, 1.0, 1e-3);
+    PlateauSettings short3;
+    short3.latestTime = 3.0;
+    const GreenKuboResult cut = greenKubo(fine, decaying, short3);
+    EXPECT_FALSE(cut.plateauFound);
+    EXPECT_LE(cut.windowEnd, 3.0 + 1e-12);
+    const double expected = 1.0 - (std::exp(-1.5) - std::exp(-3.0)) / 1.5;
+    EXPECT_NEAR(cut.integral.value, expected, 1e-3);
+}
