@@ -90,8 +90,8 @@ std::vector<std::size_t> allBlocks(std::size_t count)
 
 // The plateau of the mean running integral of the chosen blocks: the first
 // t_p after which it stays within noiseMultiple standard errors of I(t_p)
-// over [t_p, (1 + windowFactor) t_p] <= latestTime; value = window mean of
-// the mean.
+// over [t_p, (1 + windowFactor) t_p], cut at the last lag read (<= latestTime)
+// if it still spans clippedWindowRatio; value = window mean of the mean.
 Plateau findPlateau
 (
     const std::vector<double>& times,
@@ -127,10 +127,21 @@ Plateau findPlateau
         {
             continue;
         }
-        const double end = (1.0 + settings.windowFactor) * times[k];
+        double end = (1.0 + settings.windowFactor) * times[k];
         if (times[n - 1] < end)
         {
-            break;   // no full window left in the data
+            if
+            (
+                settings.clippedWindowRatio > 0
+             && times[n - 1] >= settings.clippedWindowRatio * times[k]
+            )
+            {
+                end = times[n - 1];   // cut at the last lag read
+            }
+            else
+            {
+                break;   // no window left in the data
+            }
         }
         bool flat = true;
         for (last = k; last < n && times[last] <= end && flat; ++last)
@@ -146,11 +157,21 @@ Plateau findPlateau
     }
     if (!plateau.found)
     {
-        // The latest full window: the best the data can give, flagged.
+        // The latest full window, from earliestTime on where that leaves two
+        // lags (past the decay when the caller set it so): the best the data
+        // can give, flagged.
         plateau.last = n - 1;
         plateau.first = n - 1;
-        const double begin = times[n - 1] / (1.0 + settings.windowFactor);
+        double begin = times[n - 1] / (1.0 + settings.windowFactor);
+        if (settings.earliestTime > begin && settings.earliestTime < times[n - 1])
+        {
+            begin = settings.earliestTime;
+        }
         while (plateau.first > 0 && times[plateau.first - 1] >= begin)
+        {
+            --plateau.first;
+        }
+        if (plateau.first == plateau.last && plateau.first > 0)
         {
             --plateau.first;
         }

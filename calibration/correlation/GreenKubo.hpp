@@ -38,11 +38,16 @@ struct PlateauSettings
     double windowFactor = 1.0;
     //- Ignore plateau candidates before this time (e.g. to skip t = 0).
     double earliestTime = 0.0;
-    //- Read the integral at lags up to this time only (the window ends by it). The
+    //- Read the integral at lags up to this time only (every window ends by it). The
     //  cell run sets the MSD's longest lag, so that Green-Kubo and the Einstein fit
     //  measure the same lags: past it the few pairs left in a block carry a slow
     //  tail that the MSD cannot see, and the two would differ by construction.
+    //  At least the first two lags are read.
     double latestTime = std::numeric_limits<double>::infinity();
+    //- A window that would run past the last lag read is cut there if it still
+    //  spans end/t_p >= clippedWindowRatio (0: never cut, only full windows; the
+    //  cell run takes the Einstein window's minimum, 1.5).
+    double clippedWindowRatio = 0.0;
 };
 
 struct GreenKuboResult
@@ -54,10 +59,10 @@ struct GreenKuboResult
     //  Ornstein-Uhlenbeck replicas it is honest to slightly conservative.
     Estimate integral;
     double plateauTime = 0.0;   // t_p
-    double windowEnd = 0.0;     // (1 + windowFactor) t_p, clipped to the data and
-                                // to PlateauSettings::latestTime
-    //- false: no time where the integral is flat within its noise (run longer,
-    //  or use more blocks); the integral then reports the last window anyway.
+    double windowEnd = 0.0;     // (1 + windowFactor) t_p, or the last lag read
+    //- false: no time where the integral is flat within its noise (run longer:
+    //  with latestTime, longer blocks); the integral then reports the last
+    //  window anyway, from earliestTime on where it fits.
     bool plateauFound = false;
 
     std::vector<double> times;

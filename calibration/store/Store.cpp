@@ -213,10 +213,32 @@ SettingsMismatch::SettingsMismatch
         file,
         "condition " + condition + " was run with other DEM settings:\n    stored:  "
       + storedKey + "\n    current: " + currentKey
+      + (
+            currentKey.compare(0, storedKey.size(), storedKey) == 0
+         && currentKey.size() > storedKey.size()
+          ? "\n    (the same settings, written before the measurement changed: the current"
+            " key adds \"" + currentKey.substr(storedKey.size()) + "\"; move the store"
+            " away to rerun its conditions)"
+          : std::string()
+        )
     ),
     storedKey_(storedKey),
     currentKey_(currentKey)
 {}
+
+
+std::string SettingsMismatch::addedSinceStored() const
+{
+    if
+    (
+        currentKey_.size() > storedKey_.size()
+     && currentKey_.compare(0, storedKey_.size(), storedKey_) == 0
+    )
+    {
+        return currentKey_.substr(storedKey_.size());
+    }
+    return std::string();
+}
 
 
 bool isStored
@@ -343,7 +365,8 @@ std::string settingsKey(const dem::CellRunSettings& b, const std::string& contac
         key << "; stress ACF about the mean";
     }
     // Green-Kubo read within the MSD's lags (before, up to a whole block: such
-    // stores' D can sit above the MSD's by a slow tail, and are not reused)
+    // stores' D can sit above the MSD's by a slow tail; they are refused, the
+    // message naming the tag, so that their conditions are rerun)
     key << "; Green-Kubo within the MSD's lags";
     return key.str();
 }

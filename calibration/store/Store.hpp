@@ -90,6 +90,10 @@ public:
 
     const std::string& storedKey() const { return storedKey_; }
     const std::string& currentKey() const { return currentKey_; }
+    //- What the current key adds at its end when the stored one is its beginning
+    //  (a store written before a measurement changed: the settings are the same,
+    //  the conditions must be rerun); empty otherwise.
+    std::string addedSinceStored() const;
 
 private:
     std::string storedKey_;

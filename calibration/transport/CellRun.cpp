@@ -190,7 +190,7 @@ Measurements makeMeasurements
     if (!settings.throughputOnly)
     {
         const std::vector<std::vector<int>> members = speciesMembers(sim);
-        m.push_back(std::make_unique<VelocityAutocorrelation>(members, plan));
+        m.push_back(std::make_unique<VelocityAutocorrelation>(members, plan, settings.maxMsdFrames));
         m.push_back(std::make_unique<MeanSquareDisplacementMeasurement>(members, plan, settings.maxMsdFrames));
         m.push_back(std::make_unique<StressAutocorrelation>(species, sim.box().volume(), plan));
         m.push_back(std::make_unique<CollectiveMotionMeasurement>(plan.blocks));

@@ -154,14 +154,31 @@ void TemperatureMeasurement::finish(CellRunResult& result, long) const
 
 // ---------------------------------------------------------------- velocity autocorrelation
 
+long msdFramesEvery(const SamplingPlan& plan, int maxFrames)
+{
+    return std::max(1L, (plan.samples + maxFrames - 1)/maxFrames);
+}
+
+double longestMsdLag(const SamplingPlan& plan, int maxFrames)
+{
+    // as MeanSquareDisplacementMeasurement::finish: frames at the sample indices that
+    // are multiples of framesEvery, lags up to half a block of frames
+    const long every = msdFramesEvery(plan, maxFrames);
+    const long frames = (plan.samples + every - 1)/every;
+    const long maxLag = frames/std::max(1, plan.blocks)/2;
+    return double(maxLag*every)*plan.sampleInterval;
+}
+
 VelocityAutocorrelation::VelocityAutocorrelation
 (
     std::vector<std::vector<int>> members,
-    const SamplingPlan& plan
+    const SamplingPlan& plan,
+    int maxMsdFrames
 )
 :
     members_(std::move(members)),
-    plan_(plan)
+    plan_(plan),
+    longestMsdLag_(longestMsdLag(plan, maxMsdFrames))
 {
     for (const std::vector<int>& m : members_)
     {
@@ -220,18 +237,19 @@ void VelocityAutocorrelation::finish(CellRunResult& result, long) const
             plateauSettings(plan_)
         );
         // tau_v from lags up to half a block, the MSD's longest
-        const double longestMsdLag = 0.5*plan_.samplesPerBlock*plan_.sampleInterval;
-        const double tauV = correlation::velocityCorrelationTime(first, longestMsdLag);
+        const double tauV = correlation::velocityCorrelationTime(first, longestMsdLag_);
         // ... and the plateau read within the MSD's lags: Green-Kubo and the Einstein
         // fit then measure the same stretch of the VACF, and differ only if it has not
-        // decayed there (the check's item 3 then says so)
+        // decayed there (the check's item 3 then says so). Like the Einstein window, a
+        // plateau window ending at the MSD's longest lag may span 1.5 instead of 2.
+        const correlation::DiffusiveRegimeSettings regime;
         correlation::PlateauSettings pastDecay = plateauSettings(plan_);
         pastDecay.earliestTime = std::max
         (
-            pastDecay.earliestTime,
-            correlation::DiffusiveRegimeSettings().windowStartCorrelationTimes*tauV
+            pastDecay.earliestTime, regime.windowStartCorrelationTimes*tauV
         );
-        pastDecay.latestTime = longestMsdLag;
+        pastDecay.latestTime = longestMsdLag_;
+        pastDecay.clippedWindowRatio = regime.minimumWindowRatio;
         SpeciesTransport& st = result.species[s];
         st.greenKubo = correlation::greenKubo
         (
@@ -255,7 +273,7 @@ MeanSquareDisplacementMeasurement::MeanSquareDisplacementMeasurement
 :
     members_(std::move(members)),
     plan_(plan),
-    framesEvery_(std::max(1L, (plan.samples + maxFrames - 1)/maxFrames)),
+    framesEvery_(msdFramesEvery(plan, maxFrames)),
     frames_(members_.size())
 {}
 

@@ -36,12 +36,22 @@ private:
     std::vector<std::vector<double>> species_;
 };
 
+//- Samples between the MSD's position frames (at most maxFrames per run), and its longest
+//  lag [s]: half a block of frames. The Green-Kubo D is read within the same lags.
+long msdFramesEvery(const SamplingPlan& plan, int maxFrames);
+double longestMsdLag(const SamplingPlan& plan, int maxFrames);
+
 //- Per-species velocity autocorrelation (multiple-tau, many time origins, in blocks) and
-//  its Green-Kubo integral D.
+//  its Green-Kubo integral D, read past the VACF's decay and within the MSD's lags.
 class VelocityAutocorrelation : public Measurement
 {
 public:
-    VelocityAutocorrelation(std::vector<std::vector<int>> members, const SamplingPlan& plan);
+    VelocityAutocorrelation
+    (
+        std::vector<std::vector<int>> members,
+        const SamplingPlan& plan,
+        int maxMsdFrames
+    );
     void sample(const Simulation& simulation, long index) override;
     void closeBlock() override;
     void save(io::Checkpoint& checkpoint) const override;
@@ -51,6 +61,7 @@ public:
 private:
     std::vector<std::vector<int>> members_;
     SamplingPlan plan_;
+    double longestMsdLag_;   // [s]
     std::vector<correlation::MultipleTauCorrelator> correlators_;
 };
 

@@ -283,7 +283,6 @@ Foam::label Foam::runConditions
         finishedOne.notify_one();
     };
 
-    const auto start = std::chrono::steady_clock::now();
     std::vector<std::thread> pool;
     for (label w = 0; w < workers; ++w)
     {
@@ -291,10 +290,15 @@ Foam::label Foam::runConditions
     }
 
     label ran = 0;
-    double totalCost = 0, doneCost = 0;
+    // the ETA: the worker-seconds per unit of expected cost so far, times the
+    // expected cost left, over the workers (the dearest conditions run first,
+    // so a plain count of conditions would overestimate it)
+    std::vector<double> cost(conds.size(), 0);
+    double totalCost = 0, doneCost = 0, doneSeconds = 0;
     for (const label i : todo)
     {
-        totalCost += expectedCost(conds[i], settings);
+        cost[i] = expectedCost(conds[i], settings);
+        totalCost += cost[i];
     }
     std::string firstError;
     std::unique_lock<std::mutex> lock(mutex);
@@ -335,13 +339,16 @@ Foam::label Foam::runConditions
                     store, c.inputs(), f.result
                 );
                 ++ran;
-                doneCost += expectedCost(c, settings);
-                const double total = std::chrono::duration<double>
-                    (std::chrono::steady_clock::now() - start).count();
-                // the elapsed time per unit of expected cost (the dearest
-                // conditions run first, so a plain count would overestimate)
+                doneCost += cost[f.index];
+                doneSeconds += f.seconds;
                 const double eta =
-                    doneCost > 0 ? total/doneCost*(totalCost - doneCost) : 0;
+                    doneCost > 0
+                  ? std::max
+                    (
+                        0.0,
+                        doneSeconds/doneCost*(totalCost - doneCost)/workers
+                    )
+                  : 0;
                 const sdf::dem::CellRunResult& r = f.result;
                 progress << where.c_str() << " done in " << fmt(f.seconds).c_str()
                     << " s, ETA " << fmt(eta).c_str()

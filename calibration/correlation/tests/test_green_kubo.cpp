@@ -197,9 +197,24 @@ TEST(GreenKubo, WindowEndsByTheLatestTime)
     EXPECT_NEAR(gk.windowEnd, 4.0, 1e-12);
     EXPECT_NEAR(gk.plateauTime, 2.0, 1e-12);
     EXPECT_NEAR(gk.integral.value, 3.0, 1e-9);
+    // the jackknife reads the same window: the block scatter of a window mean of
+    // (1 + 0.01 (b - 2)) t, i.e. 3 x 0.01 sqrt(2.5/5) (7.5 x that unbounded)
+    EXPECT_NEAR(gk.integral.standardError, 3 * 0.01 * std::sqrt(0.5), 1e-9);
     const GreenKuboResult unbounded = greenKubo(times, blocks);
     EXPECT_NEAR(unbounded.windowEnd, 10.0, 1e-12);
     EXPECT_NEAR(unbounded.integral.value, 7.5, 1e-9);
+    EXPECT_NEAR(unbounded.integral.standardError, 7.5 * 0.01 * std::sqrt(0.5), 1e-9);
+    // a bound between lags: the window ends at the last lag before it
+    PlateauSettings offGrid;
+    offGrid.latestTime = 4.05;
+    EXPECT_NEAR(greenKubo(times, blocks, offGrid).windowEnd, 4.0, 1e-12);
+    // without a plateau the window starts at earliestTime where that is later
+    // than t_end / 2: [3, 4], mean 3.5
+    PlateauSettings pastDecay = bounded;
+    pastDecay.earliestTime = 3.0;
+    const GreenKuboResult late = greenKubo(times, blocks, pastDecay);
+    EXPECT_NEAR(late.plateauTime, 3.0, 1e-12);
+    EXPECT_NEAR(late.integral.value, 3.5, 1e-9);
 
     // exp(-t) with tiny noise: the plateau (I = 1 within 1e-4) comes near t = 9;
     // with latestTime 3 no window [t_p, 2 t_p] inside 3 is flat, so the integral is
@@ -226,4 +241,17 @@ TEST(GreenKubo, WindowEndsByTheLatestTime)
     EXPECT_LE(cut.windowEnd, 3.0 + 1e-12);
     const double expected = 1.0 - (std::exp(-1.5) - std::exp(-3.0)) / 1.5;
     EXPECT_NEAR(cut.integral.value, expected, 1e-3);
+
+    // latestTime 12: a full window [t_p, 2 t_p] needs t_p <= 6, before the
+    // plateau; cut at the last lag it is accepted down to end/t_p = 1.2
+    PlateauSettings short12;
+    short12.latestTime = 12.0;
+    EXPECT_FALSE(greenKubo(fine, decaying, short12).plateauFound);
+    short12.clippedWindowRatio = 1.2;
+    const GreenKuboResult clipped = greenKubo(fine, decaying, short12);
+    ASSERT_TRUE(clipped.plateauFound);
+    EXPECT_GT(clipped.plateauTime, 6.0);
+    EXPECT_LE(clipped.plateauTime, 10.0 + 1e-12);
+    EXPECT_NEAR(clipped.windowEnd, 12.0, 1e-9);
+    EXPECT_NEAR(clipped.integral.value, 1.0, 1e-3);
 }

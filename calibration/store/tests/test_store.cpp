@@ -305,6 +305,23 @@ TEST(store, conditionWithOtherSettingsIsRefused)
         EXPECT_EQ(e.currentKey(), otherKey);
         EXPECT_NE(e.message().find(c.name), std::string::npos) << e.message();
         EXPECT_NE(e.message().find("particles 500"), std::string::npos) << e.message();
+        EXPECT_EQ(e.addedSinceStored(), "");
+    }
+    // a store written before the Green-Kubo reading changed: its key is the current one
+    // without the tag; refused, and the message names what the current key adds
+    const std::string tag = "; Green-Kubo within the MSD's lags";
+    ASSERT_EQ(key.substr(key.size() - tag.size()), tag);
+    std::map<std::string, std::string> older = stored;
+    older[c.name] = key.substr(0, key.size() - tag.size());
+    try
+    {
+        isStored(h5, older, c.name, key);
+        ADD_FAILURE() << "a condition stored before the measurement changed was accepted";
+    }
+    catch (const SettingsMismatch& e)
+    {
+        EXPECT_EQ(e.addedSinceStored(), tag);
+        EXPECT_NE(e.message().find("move the store away"), std::string::npos) << e.message();
     }
 }
 

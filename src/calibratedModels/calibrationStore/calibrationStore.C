@@ -48,6 +48,19 @@ bool Foam::calibrationStore::isStored
     }
     catch (const sdf::store::SettingsMismatch& err)
     {
+        const std::string added = err.addedSinceStored();
+        if (!added.empty())
+        {
+            FatalErrorInFunction
+                << "Condition " << name.c_str() << " in " << h5
+                << " was written before the measurement changed (the"
+                << " settings are the same; the current key adds \""
+                << added.c_str() << "\"):" << nl
+                << "    stored:  " << err.storedKey().c_str() << nl
+                << "    current: " << err.currentKey().c_str() << nl
+                << "    Move the file away to rerun its conditions."
+                << nl << exit(FatalError);
+        }
         FatalErrorInFunction
             << "Condition " << name.c_str() << " in " << h5
             << " was run with other DEM settings:" << nl
