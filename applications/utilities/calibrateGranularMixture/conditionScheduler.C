@@ -341,12 +341,18 @@ Foam::label Foam::runConditions
                 ++ran;
                 doneCost += cost[f.index];
                 doneSeconds += f.seconds;
+                // over the workers still busy at the end: no more than the
+                // conditions left
+                const label busy = std::max
+                (
+                    label(1), std::min(workers, label(todo.size()) - ran)
+                );
                 const double eta =
                     doneCost > 0
                   ? std::max
                     (
                         0.0,
-                        doneSeconds/doneCost*(totalCost - doneCost)/workers
+                        doneSeconds/doneCost*(totalCost - doneCost)/busy
                     )
                   : 0;
                 const sdf::dem::CellRunResult& r = f.result;
