@@ -40,6 +40,17 @@ test_calibration_run()
     calibrateGranularMixture -case "$dir" > "$dir/log.calibrateGranularMixture" 2>&1 \
         || { tail -30 "$dir/log.calibrateGranularMixture"; return 1; }
     echo "calibration of 8 conditions: $((SECONDS - start)) s"
+    # the time step is reported, at timeStep 0 half the largest accepted (t_c/100 of t_c/50)
+    grep "^DEM time step" "$dir/log.calibrateGranularMixture" | python3 -c '
+import re, sys
+line = sys.stdin.read()
+m = re.match(r"DEM time step (\S+) s \(timeStep 0: t_c/100; the largest accepted, t_c/50: (\S+) s\)", line)
+if not m:
+    sys.exit("no DEM time step line: %r" % line)
+step, largest = float(m.group(1)), float(m.group(2))
+print("DEM time step %g s, largest %g s" % (step, largest))
+sys.exit(0 if step > 0 and abs(largest/step - 2) < 1e-4 else "step %g is not half of %g" % (step, largest))' \
+        || return 1
     h5dump -H "$dir/constant/calibration.h5" > "$dir/h5dump.txt" || { echo "h5dump cannot read calibration.h5"; return 1; }
     local n
     n=$(h5ls "$dir/constant/calibration.h5/conditions" | wc -l)

@@ -60,6 +60,7 @@ Description
 #include "numberText.H"
 
 #include "store/ProcessorStores.hpp"
+#include "dem/ContactLaw.hpp"
 
 #include <chrono>
 #include <optional>
@@ -188,7 +189,27 @@ int main(int argc, char *argv[])
            ).c_str()
         << (settings.sheared() ? ", sheared cells (Lees-Edwards)" : "")
         << "), store " << h5
-        << nl << endl;
+        << nl;
+    if (!conds.empty())
+    {
+        // the step the cells run at and the largest the engine accepts, so a
+        // user can set `timeStep` (e.g. t_c/50 for a case's sheared envelope)
+        const calibrationCondition& c = conds.front();
+        const sdf::dem::CellRunSettings cell =
+            settings.conditionSettings
+            (
+                c.phi, c.x, c.rate(), c.seed, c.name, c.particles
+            );
+        const double maximum =
+            sdf::dem::ContactLaw(cell.simulation.contact, cell.species)
+           .maximumTimeStep();
+        const double step = cell.simulation.timeStep;
+        Info<< "DEM time step "
+            << (step > 0 ? step : 0.5*maximum) << " s ("
+            << (step > 0 ? "timeStep" : "timeStep 0: t_c/100")
+            << "; the largest accepted, t_c/50: " << maximum << " s)" << nl;
+    }
+    Info<< endl;
 
     // A stored condition is reused only if run with the same DEM settings
     std::vector<bool> isStored(conds.size());
