@@ -204,10 +204,21 @@ int main(int argc, char *argv[])
             sdf::dem::ContactLaw(cell.simulation.contact, cell.species)
            .maximumTimeStep();
         const double step = cell.simulation.timeStep;
+        // the linear law's limit is t_c/50 (t_c its contact duration),
+        // Hertz-Mindlin's a fifth of the Rayleigh time
+        const bool linear =
+            cell.simulation.contact.model
+         == sdf::dem::ContactModel::linearSpringDashpot;
         Info<< "DEM time step "
             << (step > 0 ? step : 0.5*maximum) << " s ("
-            << (step > 0 ? "timeStep" : "timeStep 0: t_c/100")
-            << "; the largest accepted, t_c/50: " << maximum << " s)" << nl;
+            << (
+                   step > 0 ? "timeStep"
+                 : linear ? "timeStep 0: t_c/100"
+                 : "timeStep 0: half the largest"
+               )
+            << "; the largest accepted"
+            << (linear ? ", t_c/50" : ", 0.2 Rayleigh times")
+            << ": " << maximum << " s)" << nl;
     }
     Info<< endl;
 
