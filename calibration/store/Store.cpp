@@ -16,6 +16,20 @@ namespace sdf::store
 namespace
 {
 
+//- What current adds at its end when stored is its beginning; empty otherwise
+std::string addedAtTheEnd(const std::string& stored, const std::string& current)
+{
+    if
+    (
+        current.size() > stored.size()
+     && current.compare(0, stored.size(), stored) == 0
+    )
+    {
+        return current.substr(stored.size());
+    }
+    return std::string();
+}
+
 //- %.6g: the precision of the condition names
 std::string fmt6(double v)
 {
@@ -214,12 +228,11 @@ SettingsMismatch::SettingsMismatch
         "condition " + condition + " was run with other DEM settings:\n    stored:  "
       + storedKey + "\n    current: " + currentKey
       + (
-            currentKey.compare(0, storedKey.size(), storedKey) == 0
-         && currentKey.size() > storedKey.size()
-          ? "\n    (the same settings, written before the measurement changed: the current"
-            " key adds \"" + currentKey.substr(storedKey.size()) + "\"; move the store"
+            addedAtTheEnd(storedKey, currentKey).empty()
+          ? std::string()
+          : "\n    (the same settings, written before the measurement changed: the current"
+            " key adds \"" + addedAtTheEnd(storedKey, currentKey) + "\"; move the store"
             " away to rerun its conditions)"
-          : std::string()
         )
     ),
     storedKey_(storedKey),
@@ -229,15 +242,7 @@ SettingsMismatch::SettingsMismatch
 
 std::string SettingsMismatch::addedSinceStored() const
 {
-    if
-    (
-        currentKey_.size() > storedKey_.size()
-     && currentKey_.compare(0, storedKey_.size(), storedKey_) == 0
-    )
-    {
-        return currentKey_.substr(storedKey_.size());
-    }
-    return std::string();
+    return addedAtTheEnd(storedKey_, currentKey_);
 }
 
 

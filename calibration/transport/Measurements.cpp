@@ -159,14 +159,18 @@ long msdFramesEvery(const SamplingPlan& plan, int maxFrames)
     return std::max(1L, (plan.samples + maxFrames - 1)/maxFrames);
 }
 
+std::size_t msdLongestLagFrames(std::size_t frames, int blocks)
+{
+    return frames/std::size_t(std::max(1, blocks))/2;
+}
+
 double longestMsdLag(const SamplingPlan& plan, int maxFrames)
 {
-    // as MeanSquareDisplacementMeasurement::finish: frames at the sample indices that
-    // are multiples of framesEvery, lags up to half a block of frames
+    // the frames MeanSquareDisplacementMeasurement takes: the sample indices that are
+    // multiples of framesEvery
     const long every = msdFramesEvery(plan, maxFrames);
-    const long frames = (plan.samples + every - 1)/every;
-    const long maxLag = frames/std::max(1, plan.blocks)/2;
-    return double(maxLag*every)*plan.sampleInterval;
+    const std::size_t frames = std::size_t((plan.samples + every - 1)/every);
+    return double(msdLongestLagFrames(frames, plan.blocks)*every)*plan.sampleInterval;
 }
 
 VelocityAutocorrelation::VelocityAutocorrelation
@@ -342,7 +346,7 @@ void MeanSquareDisplacementMeasurement::finish(CellRunResult& result, long) cons
     {
         const std::size_t nFrames = frames_[s].size();
         if (members_[s].empty() || nFrames < 8*nBlocks) continue;
-        const std::size_t maxLag = nFrames/nBlocks/2;
+        const std::size_t maxLag = msdLongestLagFrames(nFrames, plan_.blocks);
         const auto blockMsd = correlation::blockEstimates
         (
             correlation::meanSquareDisplacement, frames_[s], maxLag, nBlocks

@@ -36,9 +36,11 @@ private:
     std::vector<std::vector<double>> species_;
 };
 
-//- Samples between the MSD's position frames (at most maxFrames per run), and its longest
-//  lag [s]: half a block of frames. The Green-Kubo D is read within the same lags.
+//- Samples between the MSD's position frames (at most maxFrames per run), its longest
+//  lag in frames (half a block of them) and in seconds. The Green-Kubo D is read within
+//  the same lags.
 long msdFramesEvery(const SamplingPlan& plan, int maxFrames);
+std::size_t msdLongestLagFrames(std::size_t frames, int blocks);
 double longestMsdLag(const SamplingPlan& plan, int maxFrames);
 
 //- Per-species velocity autocorrelation (multiple-tau, many time origins, in blocks) and
