@@ -49,9 +49,6 @@ struct DiffusiveRegimeSettings
     std::size_t minimumPointsPerHalf = 4;
     double agreementSigmas = 2.0;
     double slopeTolerance = 0.05;
-    //- A Green-Kubo plateau window may not change from start to end by more than
-    //  this many block errors of that change (PlateauSettings::trendMultiple).
-    double plateauTrendSigmas = 2.0;
 };
 
 //- tau_v = max_t I(t) / C(0) of a Green-Kubo result over lags t <= maxTime (0 if

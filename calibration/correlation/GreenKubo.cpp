@@ -91,8 +91,7 @@ std::vector<std::size_t> allBlocks(std::size_t count)
 // The plateau of the mean running integral of the chosen blocks: the first
 // t_p after which it stays within noiseMultiple standard errors of I(t_p)
 // over [t_p, (1 + windowFactor) t_p], cut at the last lag read (<= latestTime)
-// if it still spans clippedWindowRatio, and (trendMultiple) whose blocks show no
-// significant change from t_p to the window's end; value = window mean of the mean.
+// if it still spans clippedWindowRatio; value = window mean of the mean.
 Plateau findPlateau
 (
     const std::vector<double>& times,
@@ -148,15 +147,6 @@ Plateau findPlateau
         for (last = k; last < n && times[last] <= end && flat; ++last)
         {
             flat = std::abs(I[last] - I[k]) <= settings.noiseMultiple * sigma[last];
-        }
-        if (flat && settings.trendMultiple > 0 && last - 1 > k)
-        {
-            for (std::size_t i = 0; i < chosen.size(); ++i)
-            {
-                column[i] = blockIntegrals[chosen[i]][last - 1] - blockIntegrals[chosen[i]][k];
-            }
-            const Estimate trend = meanAndStandardError(column);
-            flat = std::abs(trend.value) <= settings.trendMultiple * trend.standardError;
         }
         if (flat)
         {

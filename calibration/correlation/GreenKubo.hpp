@@ -48,14 +48,6 @@ struct PlateauSettings
     //  spans end/t_p >= clippedWindowRatio (0: never cut, only full windows; the
     //  cell run takes the Einstein window's minimum, 1.5).
     double clippedWindowRatio = 0.0;
-    //- The window must also be free of a trend: the block mean of I(window end) -
-    //  I(t_p) within trendMultiple of its standard error over the blocks (0: not
-    //  tested). The pointwise test above compares I with the noise of I itself,
-    //  which grows like sqrt(t); a slow monotone decline (a dense fluid's negative
-    //  VACF tail) stays inside that noise and still moves the plateau value by
-    //  more than its own error, since neighbouring lags of a block are correlated
-    //  and their difference is much better known than either.
-    double trendMultiple = 0.0;
 };
 
 struct GreenKuboResult

@@ -373,10 +373,6 @@ std::string settingsKey(const dem::CellRunSettings& b, const std::string& contac
     // stores' D can sit above the MSD's by a slow tail; they are refused, the
     // message naming the tag, so that their conditions are rerun)
     key << "; Green-Kubo within the MSD's lags";
-    // ... and its plateau free of a trend (before, a slow decline inside the
-    // pointwise noise was accepted: such stores' D of dense, hot cells sit a few
-    // per cent above the MSD's)
-    key << "; Green-Kubo plateau without a trend";
     return key.str();
 }
 

@@ -254,9 +254,6 @@ void VelocityAutocorrelation::finish(CellRunResult& result, long) const
         );
         pastDecay.latestTime = longestMsdLag_;
         pastDecay.clippedWindowRatio = regime.minimumWindowRatio;
-        // ... and free of a trend: a slow decline within the pointwise noise would
-        // still leave Green-Kubo above the MSD's later lags (dense, hot cells).
-        pastDecay.trendMultiple = regime.plateauTrendSigmas;
         SpeciesTransport& st = result.species[s];
         st.greenKubo = correlation::greenKubo
         (
