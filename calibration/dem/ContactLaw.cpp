@@ -372,4 +372,16 @@ double ContactLaw::maximumTimeStep() const
     return 0.2*tR;
 }
 
+std::string ContactLaw::maximumTimeStepRule() const
+{
+    return settings_.model == ContactModel::linearSpringDashpot
+        ? "t_c/50" : "0.2 Rayleigh times";
+}
+
+std::string ContactLaw::defaultTimeStepRule() const
+{
+    return settings_.model == ContactModel::linearSpringDashpot
+        ? "t_c/100" : "0.1 Rayleigh times";
+}
+
 } // namespace sdf::dem

@@ -109,6 +109,12 @@ public:
     //- Largest admissible time step: t_c/50 (linear) or 0.2 Rayleigh time (Hertz).
     double maximumTimeStep() const;
 
+    //- How maximumTimeStep() and the default step, half of it, follow from the law,
+    //  for what a run prints: "t_c/50" and "t_c/100" (linear), "0.2 Rayleigh times"
+    //  and "0.1 Rayleigh times" (Hertz). Kept here so that they change with it.
+    std::string maximumTimeStepRule() const;
+    std::string defaultTimeStepRule() const;
+
     //- Elastic energy stored in a contact with overlap delta (for NVE checks).
     double normalElasticEnergy(const PairCoefficients& c, double delta) const;
 

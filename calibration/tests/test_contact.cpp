@@ -302,3 +302,14 @@ TEST(TimeStep, LinearMaximumIsContactDurationOverFifty)
     const double tc = std::sqrt(M_PI*M_PI + lnE*lnE)*std::sqrt(m/s.contact.normalStiffness);
     EXPECT_NEAR(law.maximumTimeStep(), tc/50, 1e-12*tc);
 }
+
+TEST(TimeStep, RulesNameTheLawsLimits)
+{
+    // what calibrateGranularMixture prints beside the numbers
+    const ContactLaw linear(settingsFor(ContactModel::linearSpringDashpot, 0.5, 0.0).contact, oneSpecies());
+    EXPECT_EQ(linear.maximumTimeStepRule(), "t_c/50");
+    EXPECT_EQ(linear.defaultTimeStepRule(), "t_c/100");
+    const ContactLaw hertz(settingsFor(ContactModel::hertzMindlin, 0.5, 0.0).contact, oneSpecies());
+    EXPECT_EQ(hertz.maximumTimeStepRule(), "0.2 Rayleigh times");
+    EXPECT_EQ(hertz.defaultTimeStepRule(), "0.1 Rayleigh times");
+}

@@ -200,24 +200,16 @@ int main(int argc, char *argv[])
             (
                 c.phi, c.x, c.rate(), c.seed, c.name, c.particles
             );
-        const double maximum =
-            sdf::dem::ContactLaw(cell.simulation.contact, cell.species)
-           .maximumTimeStep();
+        const sdf::dem::ContactLaw law(cell.simulation.contact, cell.species);
+        const double maximum = law.maximumTimeStep();
         const double step = cell.simulation.timeStep;
-        // the linear law's limit is t_c/50 (t_c its contact duration),
-        // Hertz-Mindlin's a fifth of the Rayleigh time
-        const bool linear =
-            cell.simulation.contact.model
-         == sdf::dem::ContactModel::linearSpringDashpot;
         Info<< "DEM time step "
             << (step > 0 ? step : 0.5*maximum) << " s ("
             << (
-                   step > 0 ? "timeStep"
-                 : linear ? "timeStep 0: t_c/100"
-                 : "timeStep 0: half the largest"
-               )
-            << "; the largest accepted"
-            << (linear ? ", t_c/50" : ", 0.2 Rayleigh times")
+                   step > 0 ? std::string("timeStep")
+                 : "timeStep 0: " + law.defaultTimeStepRule()
+               ).c_str()   // a std::string would be written quoted
+            << "; the largest accepted, " << law.maximumTimeStepRule().c_str()
             << ": " << maximum << " s)" << nl;
     }
     Info<< endl;
