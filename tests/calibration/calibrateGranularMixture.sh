@@ -51,6 +51,14 @@ step, largest = float(m.group(1)), float(m.group(2))
 print("DEM time step %g s, largest %g s" % (step, largest))
 sys.exit(0 if step > 0 and abs(largest/step - 2) < 1e-4 else "step %g is not half of %g" % (step, largest))' \
         || return 1
+    # an ETA after every condition, never negative, 0 after the last
+    python3 - "$dir/log.calibrateGranularMixture" <<'PYEOF' || return 1
+import re, sys
+etas = [float(x) for x in re.findall(r" done in \S+ s, ETA (\S+) s", open(sys.argv[1]).read())]
+print("ETAs [s]: " + " ".join("%.2f" % e for e in etas))
+if len(etas) != 8 or min(etas) < 0 or etas[-1] != 0:
+    sys.exit("ETAs: 8 expected, >= 0, the last 0")
+PYEOF
     h5dump -H "$dir/constant/calibration.h5" > "$dir/h5dump.txt" || { echo "h5dump cannot read calibration.h5"; return 1; }
     local n
     n=$(h5ls "$dir/constant/calibration.h5/conditions" | wc -l)

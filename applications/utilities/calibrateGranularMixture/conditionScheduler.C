@@ -17,6 +17,7 @@
 #include <chrono>
 #include <condition_variable>
 #include <deque>
+#include <map>
 #include <mutex>
 #include <thread>
 
@@ -240,6 +241,8 @@ Foam::label Foam::runConditions
     std::atomic<std::size_t> next{0};
     std::atomic<bool> stop{false};
     label running = workers;
+    // when each running condition started: the ETA credits their work so far
+    std::map<label, std::chrono::steady_clock::time_point> started;
 
     auto work = [&]()
     {
@@ -253,6 +256,10 @@ Foam::label Foam::runConditions
             FinishedCondition f;
             f.index = todo[j];
             const auto t0 = std::chrono::steady_clock::now();
+            {
+                std::lock_guard<std::mutex> lock(mutex);
+                started[f.index] = t0;
+            }
             try
             {
                 const calibrationCondition& c = conds[f.index];
@@ -272,6 +279,7 @@ Foam::label Foam::runConditions
                 (std::chrono::steady_clock::now() - t0).count();
             {
                 std::lock_guard<std::mutex> lock(mutex);
+                started.erase(f.index);
                 finished.push_back(std::move(f));
             }
             finishedOne.notify_one();
@@ -292,7 +300,9 @@ Foam::label Foam::runConditions
     label ran = 0;
     // the ETA: the worker-seconds per unit of expected cost so far, times the
     // expected cost left, over the workers (the dearest conditions run first,
-    // so a plain count of conditions would overestimate it)
+    // so a plain count of conditions would overestimate it); a running
+    // condition's cost left is its expected cost less its seconds so far at
+    // that rate (at least 0)
     std::vector<double> cost(conds.size(), 0);
     double totalCost = 0, doneCost = 0, doneSeconds = 0;
     for (const label i : todo)
@@ -347,13 +357,24 @@ Foam::label Foam::runConditions
                 (
                     label(1), std::min(workers, label(todo.size()) - ran)
                 );
+                double costLeft = totalCost - doneCost;
+                if (doneSeconds > 0)
+                {
+                    const auto now = std::chrono::steady_clock::now();
+                    std::lock_guard<std::mutex> guard(mutex);
+                    for (const auto& run : started)
+                    {
+                        const double seconds =
+                            std::chrono::duration<double>(now - run.second).count();
+                        costLeft -= std::min
+                        (
+                            cost[run.first], seconds*doneCost/doneSeconds
+                        );
+                    }
+                }
                 const double eta =
                     doneCost > 0
-                  ? std::max
-                    (
-                        0.0,
-                        doneSeconds/doneCost*(totalCost - doneCost)/busy
-                    )
+                  ? std::max(0.0, doneSeconds/doneCost*costLeft/busy)
                   : 0;
                 const sdf::dem::CellRunResult& r = f.result;
                 progress << where.c_str() << " done in " << fmt(f.seconds).c_str()
