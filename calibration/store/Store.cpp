@@ -65,6 +65,7 @@ SpeciesRecord readSpecies(const io::Group& g)
     s.D = g.readDouble("D");
     s.DError = optionalDouble(g, "DError");
     s.DMsd = optionalDouble(g, "DMsd");
+    s.DMsdError = optionalDouble(g, "DMsdError");
     if (g.hasGroup("diffusiveRegime"))
     {
         const io::Group r = g.openGroup("diffusiveRegime");

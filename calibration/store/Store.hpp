@@ -165,6 +165,7 @@ struct SpeciesRecord
     double D = 0;
     std::optional<double> DError;
     std::optional<double> DMsd;
+    std::optional<double> DMsdError;
     //- The diffusive-regime check (absent in older stores): converged, its verdict,
     //  the change of the MSD's slope over the window (late - early half) and the drift
     //  of D over the run (later blocks - earlier blocks).

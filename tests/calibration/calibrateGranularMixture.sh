@@ -106,7 +106,7 @@ test_calibration_resume()
 test_calibration_bad_input()
 {
     local dir="$workRoot/calibrationBad" kind
-    local kinds="unknownCoefficient unknownLaw emptyPhi invertedT jammedPhi negativeT xOutside textStore foreignHdf5 finiteSizeAndParticles finiteSizeOneSize finiteSizeOrder badAttribution nveMode shearedWithT shearedNoGammaDot drivenWithGammaDot strainWithTime drivenWithStrain shearedGammaDotZero pairUnknownSpecies pairSetsNothing pairRestitution"
+    local kinds="unknownCoefficient unknownLaw emptyPhi invertedT jammedPhi negativeT xOutside textStore foreignHdf5 finiteSizeAndParticles finiteSizeOneSize finiteSizeOrder badAttribution badDiffusivityEstimate nveMode shearedWithT shearedNoGammaDot drivenWithGammaDot strainWithTime drivenWithStrain shearedGammaDotZero pairUnknownSpecies pairSetsNothing pairRestitution"
     [ -f "$workRoot/calibration/constant/calibration.h5" ] && kinds="$kinds truncatedStore settingsChanged drivingChanged"
     for kind in $kinds
     do
@@ -131,6 +131,8 @@ test_calibration_bad_input()
             finiteSizeOrder) foamDictionary -entry particles -remove "$d" > /dev/null
                 foamDictionary -entry finiteSize -set "{ particles (200 100); }" "$d" > /dev/null; expect="from the smallest to the largest" ;;
             badAttribution) foamDictionary -entry sievingAttribution -set paper "$d" > /dev/null; expect="valid: seed" ;;
+            badDiffusivityEstimate) foamDictionary -entry diffusivityEstimate -add einstein "$d" > /dev/null
+                expect="Entry 'diffusivityEstimate' einstein: valid: greenKubo" ;;
             nveMode) foamDictionary -entry mode -set nve "$d" > /dev/null; expect="valid: thermostatted" ;;
             shearedWithT) foamDictionary -entry mode -set leesEdwards "$d" > /dev/null; expect="Entry 'T' does not apply with mode leesEdwards" ;;
             shearedNoGammaDot) foamDictionary -entry mode -set leesEdwards "$d" > /dev/null
@@ -365,5 +367,38 @@ assert len(ratios) == len(store) == 4, (ratios, store)
 assert all(abs(a - b) <= 1e-6 * abs(b) for a, b in zip(ratios, store)), (ratios, store)
 assert any(abs(r - 1) > 1e-3 for r in ratios), "the cross terms changed nothing"
 print("eta with cross terms kept / seed's rule:", " ".join("%.3f" % r for r in ratios))
+PY
+}
+
+# diffusivityEstimate meanSquareDisplacement: the same stored cells (no DEM rerun),
+# the fit's D rows are the store's DMsd of the fines; greenKubo (default) its D
+test_calibration_diffusivity_estimate()
+{
+    local dir="$workRoot/calibrationMsd"
+    copy_calibration_case "$dir"
+    calibrateGranularMixture -case "$dir" > "$dir/log.greenKubo" 2>&1 || { tail -20 "$dir/log.greenKubo"; return 1; }
+    grep -q "diffusivityEstimate greenKubo" "$dir/log.greenKubo" || { echo "the fit does not name its D"; return 1; }
+    cp "$dir/postProcessing/calibration/D_x0.2.dat" "$dir/D_greenKubo.dat"
+    foamDictionary -entry diffusivityEstimate -add meanSquareDisplacement "$dir/system/calibrationDict" > /dev/null
+    calibrateGranularMixture -case "$dir" > "$dir/log.msd" 2>&1 || { tail -20 "$dir/log.msd"; return 1; }
+    grep -q "^DEM: 0 conditions run" "$dir/log.msd" || { echo "the estimate reran the DEM"; return 1; }
+    grep -q "diffusivityEstimate meanSquareDisplacement" "$dir/log.msd" || { echo "the fit does not name its D"; return 1; }
+    local stored
+    stored=$(for g in $(h5ls "$dir/constant/calibration.h5/conditions" | awk '{print $1}' | grep "_x0.2_")
+    do
+        h5dump -a "/conditions/$g/species/fine/D" -a "/conditions/$g/species/fine/DMsd" \
+            -m "%.17g" "$dir/constant/calibration.h5" | awk '/\(0\):/ { printf "%s ", $2 } END { print "" }'
+    done)
+    python3 - "$dir/D_greenKubo.dat" "$dir/postProcessing/calibration/D_x0.2.dat" <<PY || return 1
+import sys
+rows = lambda f: sorted(float(l.split()[1]) for l in open(f) if l.strip() and not l.startswith("#"))
+gk, msd = rows(sys.argv[1]), rows(sys.argv[2])
+pairs = [tuple(map(float, l.split())) for l in """$stored""".strip().splitlines()]
+storedGk, storedMsd = sorted(p[0] for p in pairs), sorted(p[1] for p in pairs)
+assert len(gk) == len(msd) == len(pairs) == 4, (gk, msd, pairs)
+assert all(abs(a - b) <= 1e-8 * b for a, b in zip(gk, storedGk)), (gk, storedGk)
+assert all(abs(a - b) <= 1e-8 * b for a, b in zip(msd, storedMsd)), (msd, storedMsd)
+assert any(abs(a / b - 1) > 1e-4 for a, b in zip(gk, msd)), "the two estimates are the same numbers"
+print("D of the fines, x 0.2: MSD / Green-Kubo =", " ".join("%.3f" % (b / a) for a, b in zip(gk, msd)))
 PY
 }

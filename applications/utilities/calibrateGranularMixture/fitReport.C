@@ -200,6 +200,20 @@ StoredResult storedResultOf
     r.T = record.T;
     r.D = record.fine.D;
     r.DError = *record.fine.DError;
+    if (settings.diffusivityEstimate() == "meanSquareDisplacement")
+    {
+        if (!record.fine.DMsd || !record.fine.DMsdError)
+        {
+            throw std::runtime_error
+            (
+                "condition " + c.name + " has no D_MSD of the fines (a store"
+                " written before the MSD was measured): diffusivityEstimate"
+                " meanSquareDisplacement needs it; use greenKubo or rerun"
+            );
+        }
+        r.D = *record.fine.DMsd;
+        r.DError = *record.fine.DMsdError;
+    }
     if (record.fine.DConverged && !*record.fine.DConverged)
     {
         // Weighted down, not dropped: the disagreements that failed
@@ -211,7 +225,7 @@ StoredResult storedResultOf
         // short counts as what it is, an estimate with a systematic
         // error of that size (docs/user/calibration.md)
         const sdf::store::SpeciesRecord& f = record.fine;
-        const scalar gkMinusMsd = f.DMsd ? r.D - *f.DMsd : r.D;
+        const scalar gkMinusMsd = f.DMsd ? f.D - *f.DMsd : f.D;
         const scalar truncation =
             !f.DWindowPastDecay && f.DCorrelationTime > 0
           ? r.D*std::exp(-f.DFitStart/f.DCorrelationTime)
@@ -226,7 +240,11 @@ StoredResult storedResultOf
         Info<< "    condition " << c.name.c_str()
             << ": D of the fines not in the diffusive regime ("
             << r.DVerdict.c_str() << "); its error in the fit raised from "
-            << *f.DError << " to " << r.DError << " m2/s" << nl;
+            << (
+                   settings.diffusivityEstimate() == "meanSquareDisplacement"
+                 ? *f.DMsdError : *f.DError
+               )
+            << " to " << r.DError << " m2/s" << nl;
     }
     // eta by the attribution rule chosen (sievingAttribution; the fit's
     // choice only: the tabulated models read the seed's eta)
@@ -901,6 +919,7 @@ void Foam::fitAndReport
             coeff,
             isD
           ? "diffusivity of " + settings.fine().name
+          + ", diffusivityEstimate " + settings.diffusivityEstimate()
           : "kinetic sieving coefficient of " + settings.coarse().name
           + ", sievingAttribution " + settings.sievingAttribution(),
             rows,

@@ -120,6 +120,7 @@ TEST(store, writesAndReadsBackACondition)
     EXPECT_EQ(contents.conditions[0].fine.D, 2*r.species[0].greenKubo.integral.value);
     // the diffusive-regime check read back: the fines converged, the coarse not
     EXPECT_EQ(*c.fine.DMsd, r.species[0].diffusivityMsd.value);
+    EXPECT_EQ(*c.fine.DMsdError, r.species[0].diffusivityMsd.standardError);
     ASSERT_TRUE(c.fine.DConverged);
     EXPECT_TRUE(*c.fine.DConverged);
     EXPECT_EQ(c.fine.DVerdict, "diffusive");

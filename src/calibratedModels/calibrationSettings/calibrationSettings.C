@@ -54,7 +54,7 @@ const Foam::wordList validEntries
     "etaDiameterPower", "fitMaxIterations",
     "particles", "mode", "plot", "concurrentConditions", "fromCase",
     "equilibrationStrain", "maxEquilibrationStrain", "samplingStrain",
-    "finiteSize", "sievingAttribution"
+    "finiteSize", "sievingAttribution", "diffusivityEstimate"
 });
 
 
@@ -279,6 +279,21 @@ Foam::calibrationSettings::calibrationSettings
             << ": valid: seed (the seed's eqs 8-13, the stress"
             << " autocorrelation's cross terms dropped), crossTerms (kept,"
             << " split by the species' shares; docs/user/calibration.md)"
+            << nl << exit(FatalIOError);
+    }
+    diffusivityEstimate_ =
+        dict.getOrDefault<word>("diffusivityEstimate", "greenKubo");
+    if
+    (
+        diffusivityEstimate_ != "greenKubo"
+     && diffusivityEstimate_ != "meanSquareDisplacement"
+    )
+    {
+        FatalIOErrorInFunction(dict)
+            << "Entry 'diffusivityEstimate' " << diffusivityEstimate_
+            << ": valid: greenKubo (the VACF's plateau), meanSquareDisplacement"
+            << " (the Einstein fit's slope over the MSD's later lags; both are"
+            << " measured in every cell, docs/user/calibration.md)"
             << nl << exit(FatalIOError);
     }
     fitMaxIterations_ = dict.getOrDefault<label>("fitMaxIterations", 2000);
