@@ -30,6 +30,18 @@ for line in sys.stdin:
 sys.stdout.write("".join(out[1:]))'
 }
 
+# Two attributes of a species of every x 0.2 condition of a store, one line
+# "a b" per condition (full precision): x02_attribute_pairs store species a b
+x02_attribute_pairs()
+{
+    local g
+    for g in $(h5ls "$1/conditions" | awk '{print $1}' | grep "_x0.2_")
+    do
+        h5dump -a "/conditions/$g/species/$2/$3" -a "/conditions/$g/species/$2/$4" \
+            -m "%.17g" "$1" | awk '/\(0\):/ { printf "%s ", $2 } END { print "" }'
+    done
+}
+
 # A small calibration completes: calibration.h5 readable, one group per
 # condition, granularCoefficients with D/law readable by foamDictionary
 test_calibration_run()
@@ -352,11 +364,7 @@ test_calibration_eta()
     calibrateGranularMixture -case "$dir" > "$dir/log.crossTerms" 2>&1 || { tail -20 "$dir/log.crossTerms"; return 1; }
     grep -q "^DEM: 0 conditions run" "$dir/log.crossTerms" || { echo "the attribution reran the DEM"; return 1; }
     local ratios
-    ratios=$(for g in $(h5ls "$dir/constant/calibration.h5/conditions" | awk '{print $1}' | grep "_x0.2_")
-    do
-        h5dump -a "/conditions/$g/species/coarse/eta" -a "/conditions/$g/species/coarse/etaWithCrossTerms" \
-            -m "%.17g" "$dir/constant/calibration.h5" | awk '/\(0\):/ { printf "%s ", $2 } END { print "" }'
-    done)
+    ratios=$(x02_attribute_pairs "$dir/constant/calibration.h5" coarse eta etaWithCrossTerms)
     python3 - "$dir/eta_seed.dat" "$dir/postProcessing/calibration/eta_x0.2.dat" <<PY || return 1
 import sys
 rows = lambda f: [tuple(map(float, l.split()[:2])) for l in open(f) if l.strip() and not l.startswith("#")]
@@ -384,11 +392,7 @@ test_calibration_diffusivity_estimate()
     grep -q "^DEM: 0 conditions run" "$dir/log.msd" || { echo "the estimate reran the DEM"; return 1; }
     grep -q "diffusivityEstimate meanSquareDisplacement" "$dir/log.msd" || { echo "the fit does not name its D"; return 1; }
     local stored
-    stored=$(for g in $(h5ls "$dir/constant/calibration.h5/conditions" | awk '{print $1}' | grep "_x0.2_")
-    do
-        h5dump -a "/conditions/$g/species/fine/D" -a "/conditions/$g/species/fine/DMsd" \
-            -m "%.17g" "$dir/constant/calibration.h5" | awk '/\(0\):/ { printf "%s ", $2 } END { print "" }'
-    done)
+    stored=$(x02_attribute_pairs "$dir/constant/calibration.h5" fine D DMsd)
     python3 - "$dir/D_greenKubo.dat" "$dir/postProcessing/calibration/D_x0.2.dat" <<PY || return 1
 import sys
 rows = lambda f: sorted(float(l.split()[1]) for l in open(f) if l.strip() and not l.startswith("#"))
