@@ -109,6 +109,9 @@ public:
     //- Largest admissible time step: t_c/50 (linear) or 0.2 Rayleigh time (Hertz).
     double maximumTimeStep() const;
 
+    //- The step a run takes at timeStep 0: half the largest admissible.
+    double defaultTimeStep() const { return 0.5*maximumTimeStep(); }
+
     //- How maximumTimeStep() and the default step, half of it, follow from the law,
     //  for what a run prints: "t_c/50" and "t_c/100" (linear), "0.2 Rayleigh times"
     //  and "0.1 Rayleigh times" (Hertz). Kept here so that they change with it.

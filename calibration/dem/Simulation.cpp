@@ -121,7 +121,7 @@ Simulation::Simulation
     }
 
     const double dtMax = law_.maximumTimeStep();
-    dt_ = settings_.timeStep > 0 ? settings_.timeStep : 0.5*dtMax;
+    dt_ = settings_.timeStep > 0 ? settings_.timeStep : law_.defaultTimeStep();
     if (!(settings_.timeStep >= 0) || !std::isfinite(settings_.timeStep))
     {
         throw std::invalid_argument("timeStep must be positive");

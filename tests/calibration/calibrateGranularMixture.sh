@@ -384,6 +384,9 @@ test_calibration_diffusivity_estimate()
 {
     local dir="$workRoot/calibrationMsd"
     copy_calibration_case "$dir"
+    # the run test's cells when it ran first (no DEM then), else their own
+    [ -f "$workRoot/calibration/constant/calibration.h5" ] \
+        && cp "$workRoot/calibration/constant/calibration.h5" "$dir/constant/"
     calibrateGranularMixture -case "$dir" > "$dir/log.greenKubo" 2>&1 || { tail -20 "$dir/log.greenKubo"; return 1; }
     grep -q "diffusivityEstimate greenKubo" "$dir/log.greenKubo" || { echo "the fit does not name its D"; return 1; }
     cp "$dir/postProcessing/calibration/D_x0.2.dat" "$dir/D_greenKubo.dat"
@@ -391,6 +394,10 @@ test_calibration_diffusivity_estimate()
     calibrateGranularMixture -case "$dir" > "$dir/log.msd" 2>&1 || { tail -20 "$dir/log.msd"; return 1; }
     grep -q "^DEM: 0 conditions run" "$dir/log.msd" || { echo "the estimate reran the DEM"; return 1; }
     grep -q "diffusivityEstimate meanSquareDisplacement" "$dir/log.msd" || { echo "the fit does not name its D"; return 1; }
+    local recorded
+    recorded=$(foamDictionary -entry D/diffusivityEstimate -value "$dir/constant/granularCoefficients") || return 1
+    [ "$recorded" = meanSquareDisplacement ] || { echo "granularCoefficients records D/diffusivityEstimate '$recorded'"; return 1; }
+    grep -q "set title 'DEM (MSD" "$dir/postProcessing/calibration/D_x0.2.gp" || { echo "the plot does not name the MSD"; return 1; }
     local stored
     stored=$(x02_attribute_pairs "$dir/constant/calibration.h5" fine D DMsd)
     python3 - "$dir/D_greenKubo.dat" "$dir/postProcessing/calibration/D_x0.2.dat" <<PY || return 1

@@ -204,7 +204,7 @@ int main(int argc, char *argv[])
         const double maximum = law.maximumTimeStep();
         const double step = cell.simulation.timeStep;
         Info<< "DEM time step "
-            << (step > 0 ? step : 0.5*maximum) << " s ("
+            << (step > 0 ? step : law.defaultTimeStep()) << " s ("
             << (
                    step > 0 ? std::string("timeStep")
                  : "timeStep 0: " + law.defaultTimeStepRule()

@@ -371,9 +371,14 @@ Foam::label Foam::runConditions
                             cost[run.first], seconds*doneCost/doneSeconds
                         );
                     }
+                    // finished, waiting to be stored: no work left
+                    for (const FinishedCondition& waiting : finished)
+                    {
+                        costLeft -= cost[waiting.index];
+                    }
                 }
                 const double eta =
-                    doneCost > 0
+                    doneCost > 0 && ran < label(todo.size())
                   ? std::max(0.0, doneSeconds/doneCost*costLeft/busy)
                   : 0;
                 const sdf::dem::CellRunResult& r = f.result;

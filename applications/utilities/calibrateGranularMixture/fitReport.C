@@ -473,7 +473,12 @@ void plotCoefficient
                << "set key top left\n"
                << "set xlabel 'T [m^2/s^2] (sum of 3 components)'\n"
                << "set ylabel '" << what << "'\n"
-               << "set title 'DEM (Green-Kubo"
+               << "set title 'DEM ("
+               << (
+                      isD
+                   && settings.diffusivityEstimate() == "meanSquareDisplacement"
+                    ? "MSD" : "Green-Kubo"
+                  )
                << (
                       isD && !results.empty() && results.front().finiteSize
                     ? std::string(", infinite cell")
@@ -927,10 +932,15 @@ void Foam::fitAndReport
             options,
             settings
         );
-        if (!isD)
-        {
-            chosen.provenance.push_back({"sievingAttribution", settings.sievingAttribution()});
-        }
+        // which estimate the law was fitted to, in granularCoefficients
+        chosen.provenance.push_back
+        (
+            isD
+          ? std::pair<std::string, std::string>
+            {"diffusivityEstimate", settings.diffusivityEstimate()}
+          : std::pair<std::string, std::string>
+            {"sievingAttribution", settings.sievingAttribution()}
+        );
         if (isD) bestD = chosen.fit; else bestEta = chosen.fit;
         calibrated.push_back(chosen);
     }
