@@ -412,4 +412,26 @@ assert all(abs(a - b) <= 1e-8 * b for a, b in zip(msd, storedMsd)), (msd, stored
 assert any(abs(a / b - 1) > 1e-4 for a, b in zip(gk, msd)), "the two estimates are the same numbers"
 print("D of the fines, x 0.2: MSD / Green-Kubo =", " ".join("%.3f" % (b / a) for a, b in zip(gk, msd)))
 PY
+    # cells outside the diffusive regime: the error raised is the MSD's own, by at
+    # least |D_GK - D_MSD| (the disagreement counted as a systematic error)
+    local g raised=""
+    for g in $(h5ls "$dir/constant/calibration.h5/conditions" | awk '{print $1}')
+    do
+        raised="$raised$g $(h5dump -a "/conditions/$g/species/fine/D" -a "/conditions/$g/species/fine/DMsd" \
+            -a "/conditions/$g/species/fine/DMsdError" -m "%.17g" "$dir/constant/calibration.h5" \
+            | awk '/\(0\):/ { printf "%s ", $2 }')
+"
+    done
+    python3 - "$dir/log.msd" <<PY || return 1
+import re, sys
+stored = {l.split()[0]: tuple(map(float, l.split()[1:])) for l in """$raised""".strip().splitlines()}
+lines = re.findall(r"condition (\S+): D of the fines not in the diffusive regime .*raised from (\S+) to (\S+) m2/s",
+                   open(sys.argv[1]).read())
+assert lines, "no condition outside the diffusive regime to check"
+for name, before, after in lines:
+    D, msd, msdError = stored[name]
+    assert abs(float(before) - msdError) <= 1e-5 * msdError, (name, before, msdError)
+    assert float(after) >= max(msdError, abs(D - msd)) * (1 - 1e-5), (name, after, D, msd)
+print("%d cells outside the diffusive regime: errors raised from the MSD's" % len(lines))
+PY
 }
