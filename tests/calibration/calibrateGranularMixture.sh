@@ -30,15 +30,18 @@ for line in sys.stdin:
 sys.stdout.write("".join(out[1:]))'
 }
 
-# Two attributes of a species of every x 0.2 condition of a store, one line
-# "a b" per condition (full precision): x02_attribute_pairs store species a b
-x02_attribute_pairs()
+# Attributes of a species of the conditions of a store whose names match a grep
+# pattern, one line "condition a b ..." per condition (full precision):
+# condition_attributes store pattern species attribute...
+condition_attributes()
 {
-    local g
-    for g in $(h5ls "$1/conditions" | awk '{print $1}' | grep "_x0.2_")
+    local store=$1 pattern=$2 species=$3 g a
+    shift 3
+    for g in $(h5ls "$store/conditions" | awk '{print $1}' | grep -- "$pattern")
     do
-        h5dump -a "/conditions/$g/species/$2/$3" -a "/conditions/$g/species/$2/$4" \
-            -m "%.17g" "$1" | awk '/\(0\):/ { printf "%s ", $2 } END { print "" }'
+        local args=()
+        for a in "$@"; do args+=(-a "/conditions/$g/species/$species/$a"); done
+        echo "$g $(h5dump "${args[@]}" -m "%.17g" "$store" | awk '/\(0\):/ { printf "%s ", $2 }')"
     done
 }
 
@@ -364,12 +367,12 @@ test_calibration_eta()
     calibrateGranularMixture -case "$dir" > "$dir/log.crossTerms" 2>&1 || { tail -20 "$dir/log.crossTerms"; return 1; }
     grep -q "^DEM: 0 conditions run" "$dir/log.crossTerms" || { echo "the attribution reran the DEM"; return 1; }
     local ratios
-    ratios=$(x02_attribute_pairs "$dir/constant/calibration.h5" coarse eta etaWithCrossTerms)
+    ratios=$(condition_attributes "$dir/constant/calibration.h5" _x0.2_ coarse eta etaWithCrossTerms)
     python3 - "$dir/eta_seed.dat" "$dir/postProcessing/calibration/eta_x0.2.dat" <<PY || return 1
 import sys
 rows = lambda f: [tuple(map(float, l.split()[:2])) for l in open(f) if l.strip() and not l.startswith("#")]
 seed, kept = rows(sys.argv[1]), rows(sys.argv[2])
-store = sorted(kept_ / eta for eta, kept_ in (map(float, l.split()) for l in """$ratios""".strip().splitlines()))
+store = sorted(kept_ / eta for eta, kept_ in (map(float, l.split()[1:]) for l in """$ratios""".strip().splitlines()))
 ratios = sorted(k[1] / s[1] for s, k in zip(seed, kept))
 assert len(ratios) == len(store) == 4, (ratios, store)
 assert all(abs(a - b) <= 1e-6 * abs(b) for a, b in zip(ratios, store)), (ratios, store)
@@ -399,12 +402,12 @@ test_calibration_diffusivity_estimate()
     [ "$recorded" = meanSquareDisplacement ] || { echo "granularCoefficients records D/diffusivityEstimate '$recorded'"; return 1; }
     grep -q "set title 'DEM (MSD" "$dir/postProcessing/calibration/D_x0.2.gp" || { echo "the plot does not name the MSD"; return 1; }
     local stored
-    stored=$(x02_attribute_pairs "$dir/constant/calibration.h5" fine D DMsd)
+    stored=$(condition_attributes "$dir/constant/calibration.h5" _x0.2_ fine D DMsd)
     python3 - "$dir/D_greenKubo.dat" "$dir/postProcessing/calibration/D_x0.2.dat" <<PY || return 1
 import sys
 rows = lambda f: sorted(float(l.split()[1]) for l in open(f) if l.strip() and not l.startswith("#"))
 gk, msd = rows(sys.argv[1]), rows(sys.argv[2])
-pairs = [tuple(map(float, l.split())) for l in """$stored""".strip().splitlines()]
+pairs = [tuple(map(float, l.split()[1:])) for l in """$stored""".strip().splitlines()]
 storedGk, storedMsd = sorted(p[0] for p in pairs), sorted(p[1] for p in pairs)
 assert len(gk) == len(msd) == len(pairs) == 4, (gk, msd, pairs)
 assert all(abs(a - b) <= 1e-8 * b for a, b in zip(gk, storedGk)), (gk, storedGk)
@@ -414,14 +417,8 @@ print("D of the fines, x 0.2: MSD / Green-Kubo =", " ".join("%.3f" % (b / a) for
 PY
     # cells outside the diffusive regime: the error raised is the MSD's own, by at
     # least |D_GK - D_MSD| (the disagreement counted as a systematic error)
-    local g raised=""
-    for g in $(h5ls "$dir/constant/calibration.h5/conditions" | awk '{print $1}')
-    do
-        raised="$raised$g $(h5dump -a "/conditions/$g/species/fine/D" -a "/conditions/$g/species/fine/DMsd" \
-            -a "/conditions/$g/species/fine/DMsdError" -m "%.17g" "$dir/constant/calibration.h5" \
-            | awk '/\(0\):/ { printf "%s ", $2 }')
-"
-    done
+    local raised
+    raised=$(condition_attributes "$dir/constant/calibration.h5" . fine D DMsd DMsdError)
     python3 - "$dir/log.msd" <<PY || return 1
 import re, sys
 stored = {l.split()[0]: tuple(map(float, l.split()[1:])) for l in """$raised""".strip().splitlines()}

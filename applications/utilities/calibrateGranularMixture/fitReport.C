@@ -200,7 +200,7 @@ StoredResult storedResultOf
     r.T = record.T;
     r.D = record.fine.D;
     r.DError = *record.fine.DError;
-    if (settings.diffusivityEstimate() == "meanSquareDisplacement")
+    if (settings.diffusivityFromMsd())
     {
         if (!record.fine.DMsd || !record.fine.DMsdError)
         {
@@ -232,6 +232,7 @@ StoredResult storedResultOf
           : 0;
         r.DNotConverged = true;
         r.DVerdict = f.DVerdict;
+        const scalar measuredError = r.DError;
         r.DError = std::sqrt
         (
             sqr(r.DError) + sqr(gkMinusMsd) + sqr(f.DSlopeChange)
@@ -240,11 +241,7 @@ StoredResult storedResultOf
         Info<< "    condition " << c.name.c_str()
             << ": D of the fines not in the diffusive regime ("
             << r.DVerdict.c_str() << "); its error in the fit raised from "
-            << (
-                   settings.diffusivityEstimate() == "meanSquareDisplacement"
-                 ? *f.DMsdError : *f.DError
-               )
-            << " to " << r.DError << " m2/s" << nl;
+            << measuredError << " to " << r.DError << " m2/s" << nl;
     }
     // eta by the attribution rule chosen (sievingAttribution; the fit's
     // choice only: the tabulated models read the seed's eta)
@@ -475,8 +472,7 @@ void plotCoefficient
                << "set ylabel '" << what << "'\n"
                << "set title 'DEM ("
                << (
-                      isD
-                   && settings.diffusivityEstimate() == "meanSquareDisplacement"
+                      isD && settings.diffusivityFromMsd()
                     ? "MSD" : "Green-Kubo"
                   )
                << (
