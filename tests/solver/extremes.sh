@@ -1,0 +1,186 @@
+# shellcheck shell=bash
+# The solver's extremes matrix (sourced by tests/run; tests solver/extremes/*): the
+# closed box of tests/solver/closedBox (cyclic in x, walls at the base and the lid,
+# 16 x 24 cells, shear flow, diffusion, kinetic sieving and percolation on) pushed to one
+# extreme at a time. Every case runs and is
+#   bounded       0 <= n_i <= sum_j n_j at every written time (tolerance 1e-8), no
+#                 non-finite value in any written field (sdfoam.fieldStats bounds),
+#   conservative  the closed box's solids volume (each species' without breakage) equal
+#                 to its initial value to 1e-10 relative over every step (the solver's
+#                 "Solids:" lines, 15 digits),
+# and, where an exact or reference value exists, meets it (per case below). The
+# matrix with the observed values is the extremes table of docs/validation.md; the
+# DEM's extremes are calibration/tests/test_extremes.cpp.
+
+# extreme_case DIR FINE COARSE: a fresh closed box in DIR whose mixed layer (0 < z <
+# 0.8) holds n.fine = FINE and n.coarse = COARSE (the shear flow's faster upper half
+# as in closedBox), end time 0.5 s
+extreme_case()
+{
+    local dir="$1" fine="$2" coarse="$3"
+    rm -rf "$dir"; cp -r tests/solver/closedBox "$dir"
+    foamDictionary -entry endTime -set 0.5 "$dir/system/controlDict" > /dev/null
+    foamDictionary -entry writeInterval -set 0.25 "$dir/system/controlDict" > /dev/null
+    cat > "$dir/system/setFieldsDict" <<DICT
+FoamFile { version 2.0; format ascii; class dictionary; object setFieldsDict; }
+defaultFieldValues ( volScalarFieldValue n.fine 0 volScalarFieldValue n.coarse 0 volVectorFieldValue U (0.5 0 0) );
+regions
+(
+    boxToCell { box (-1 -1 0) (2 2 0.8); fieldValues ( volScalarFieldValue n.fine $fine volScalarFieldValue n.coarse $coarse ); }
+    boxToCell { box (-1 -1 0.5) (2 2 2); fieldValues ( volVectorFieldValue U (1 0 0) ); }
+);
+DICT
+}
+
+# add_species DIR NAME D VALUE: one more species of diameter D, VALUE in the mixed layer
+add_species()
+{
+    local dir="$1" name="$2" d="$3" value="$4"
+    sed "s/object n.fine;/object n.$name;/" "$dir/0.orig/n.fine" > "$dir/0.orig/n.$name"
+    foamDictionary -entry "species/$name" -set "{ d $d; rho 2500; }" \
+        "$dir/constant/granularProperties" > /dev/null
+    sed -i "s|volScalarFieldValue n.fine 0 |&volScalarFieldValue n.$name 0 |; \
+            s|fieldValues ( volScalarFieldValue n.fine \([^ ]*\) |&volScalarFieldValue n.$name $value |" \
+        "$dir/system/setFieldsDict"
+}
+
+# fixed_step DIR DT: adjustTimeStep off at deltaT DT
+fixed_step()
+{
+    foamDictionary -entry adjustTimeStep -set no "$1/system/controlDict" > /dev/null
+    foamDictionary -entry deltaT -set "$2" "$1/system/controlDict" > /dev/null
+}
+
+# run_extreme DIR: mesh, initial fields, solver (log in DIR/log.solver)
+run_extreme()
+{
+    local dir="$1"
+    blockMesh -case "$dir" > "$dir/log.blockMesh" 2>&1 || { cat "$dir/log.blockMesh"; return 1; }
+    cp -r "$dir/0.orig" "$dir/0"
+    setFields -case "$dir" > "$dir/log.setFields" 2>&1 || { cat "$dir/log.setFields"; return 1; }
+    segregationDegradationFoam -case "$dir" > "$dir/log.solver" 2>&1 || { tail -30 "$dir/log.solver"; return 1; }
+}
+
+# check_extreme DIR [perSpecies|totalOnly] [PYTHON]: bounds, no non-finite value,
+# conservation (each species, or only the total with breakage) to 1e-10 relative; then
+# the case's own check PYTHON, run with the step rows in `rows` (dicts: total and each
+# n.<species>, from the "Initial solids:" line on) and `case` (the case directory)
+check_extreme()
+{
+    local dir="$1" conserved="${2:-perSpecies}" own="${3:-}"
+    python3 -m sdfoam.fieldStats "$dir" bounds --tol 1e-8 || return 1
+    python3 - "$dir" "$conserved" "$own" <<'PY'
+import re, sys
+case, conserved, own = sys.argv[1], sys.argv[2], sys.argv[3]
+rows = []
+for line in open(case + "/log.solver"):
+    if line.startswith("Solids:") or line.startswith("Initial solids:"):
+        row = {"total": float(re.search(r"total volume (\S+)", line).group(1))}
+        for name, v in re.findall(r"(n\.\w+) volume (\S+)", line):
+            row[name] = float(v)
+        rows.append(row)
+if len(rows) < 3:
+    print("FAIL: fewer than 2 steps in the log"); sys.exit(1)
+species = sorted(k for k in rows[0] if k != "total")
+if not species or any(sorted(k for k in r if k != "total") != species for r in rows):
+    print("FAIL: the species' volumes are not on every line from the initial one"); sys.exit(1)
+keys = ["total"] + ([] if conserved == "totalOnly" else species)
+ok = True
+for k in keys:
+    first = rows[0][k]
+    worst = max(abs(r[k] - first) for r in rows)
+    rel = worst / first if first > 0 else worst
+    print("%s: initial %.6e, max %s change over %d steps %.2e"
+          % (k, first, "relative" if first > 0 else "absolute", len(rows) - 1, rel))
+    # an absent species stays exactly 0
+    ok &= rel <= (1e-10 if first > 0 else 0.0)
+if own:
+    exec(own)
+sys.exit(0 if ok else 1)
+PY
+}
+
+# test_extreme KIND: one row of the matrix
+test_extreme()
+{
+    local kind="$1" dir="$workRoot/extremes-$1"
+    local gp="$dir/constant/granularProperties" conserved=perSpecies own=""
+    case "$kind" in
+        noDiffusionCo1|noDiffusionCo5|noDiffusionCo50)
+            # Pe -> infinity: no diffusion, a fixed step at Courant number 1, 5, 50 of the
+            # fastest cell (|U| = 1 m/s, dx = 1/16 m; the segregation fluxes then run at
+            # up to that Courant number too), 25 s: long past the layer's segregation
+            # time. Exact end state without diffusion: fully segregated, the fines' 9.5
+            # rows (of the layer's 19 at n = 0.6) at the base, their centre of mass at
+            # z = 0.1985 m; within 0.01 m (a quarter of a row)
+            local co="${kind#noDiffusionCo}"
+            extreme_case "$dir" 0.3 0.3
+            foamDictionary -entry diffusivity -set "{ model none; }" "$gp" > /dev/null
+            fixed_step "$dir" "$(python3 -c "print($co/16)")"
+            foamDictionary -entry endTime -set 25 "$dir/system/controlDict" > /dev/null
+            foamDictionary -entry writeInterval -set 12.5 "$dir/system/controlDict" > /dev/null
+            own='
+from sdfoam import foamcase
+t = foamcase.latestTime(case)
+fine = foamcase.readScalarField(case, t, "n.fine")
+z = [(k // 16 + 0.5) / 24 for k in range(len(fine))]   # blockMesh order: x fastest
+rows = 19                                                # cell centres below z = 0.8
+exact = (0.6 * sum(j + 0.5 for j in range(9)) + 0.3 * 9.5) / (0.6 * rows / 2) / 24
+zc = sum(f * h for f, h in zip(fine, z)) / sum(fine)
+print("fines centre of mass at t = %s: %.4f m, fully segregated %.4f m" % (t, zc, exact))
+ok &= abs(zc - exact) <= 0.01'
+            ;;
+        dilute)
+            # phi -> 0: 1e-12 solids in the layer (below phiMin: no segregation there)
+            extreme_case "$dir" 5e-13 5e-13 ;;
+        packed|overPacked)
+            # phi at random close packing (0.64) and above it (0.70)
+            local half=0.32; [ "$kind" = overPacked ] && half=0.35
+            extreme_case "$dir" "$half" "$half" ;;
+        fewFines|fewCoarse)
+            # x -> 0 and x -> 1: one species at 1e-9 of the other
+            if [ "$kind" = fewFines ]
+            then
+                extreme_case "$dir" 6e-10 0.6
+            else
+                extreme_case "$dir" 0.6 6e-10
+            fi ;;
+        absentSpecies)
+            # a species absent everywhere: it stays exactly 0, the other is conserved
+            extreme_case "$dir" 0.6 0
+            own='
+c = [r["n.coarse"] for r in rows]
+print("absent n.coarse: largest volume over the run %g" % max(c))
+ok &= max(c) == 0.0' ;;
+        sizeRatio4|sizeRatio10)
+            # coarse 4 and 10 times the fines (percolation and sieving on)
+            extreme_case "$dir" 0.3 0.3
+            foamDictionary -entry species/coarse/d -set "${kind#sizeRatio}e-3" "$gp" > /dev/null ;;
+        threeSpecies|fourSpecies)
+            extreme_case "$dir" 0.2 0.2
+            add_species "$dir" medium 1.5e-3 0.2
+            if [ "$kind" = fourSpecies ]
+            then
+                add_species "$dir" large 3e-3 0.1
+            fi ;;
+        breakageStiff)
+            # breakage rate x dt = 1e6: the coarse species breaks into fines within the
+            # first step; implicit in the sink, coarse falls by 1/(1 + S dt) per step
+            # (plus what transport moves), the solids' total is kept
+            extreme_case "$dir" 0.3 0.3
+            fixed_step "$dir" 1e-3
+            foamDictionary -entry endTime -set 0.02 "$dir/system/controlDict" > /dev/null
+            foamDictionary -entry writeInterval -set 0.01 "$dir/system/controlDict" > /dev/null
+            foamDictionary -entry breakage -remove "$gp" > /dev/null
+            echo "breakage { model constant; constantCoeffs { S { coarse 1e9; } } daughterSizeDistribution { model table; tableCoeffs { coarse { fine 1; } } } }" >> "$gp"
+            conserved=totalOnly
+            own='
+c0, c1 = rows[0]["n.coarse"], rows[1]["n.coarse"]
+print("breakage S dt = 1e6: coarse after the first step %.3e of its initial volume (1/(1 + S dt) = %.3e)" % (c1 / c0, 1 / (1 + 1e6)))
+ok &= c1 / c0 <= 1.5e-6 and abs(rows[-1]["n.fine"] - rows[0]["total"]) <= 1e-10 * rows[0]["total"]' ;;
+        *)
+            echo "test_extreme: unknown kind $kind"; return 1 ;;
+    esac
+    run_extreme "$dir" || return 1
+    check_extreme "$dir" "$conserved" "$own"
+}
