@@ -131,8 +131,27 @@ print("fines centre of mass at t = %s: %.4f m, fully segregated %.4f m" % (t, zc
 ok &= abs(zc - exact) <= 0.01'
             ;;
         dilute)
-            # phi -> 0: 1e-12 solids in the layer (below phiMin: no segregation there)
-            extreme_case "$dir" 5e-13 5e-13 ;;
+            # phi -> 0: 1e-12 solids in the layer. The diffusivity vanishes with the
+            # presence min(1, phi/phiMin); the drift velocities (grayThornton,
+            # velocityGradient) do not depend on phi, so the equations are linear in n:
+            # reference, the dense layer (0.3 + 0.3) without diffusion, scaled by
+            # 5e-13/0.3, within 1e-8 of the dense values
+            extreme_case "$dir" 5e-13 5e-13
+            extreme_case "$dir-reference" 0.3 0.3
+            foamDictionary -entry diffusivity -set "{ model none; }" \
+                "$dir-reference/constant/granularProperties" > /dev/null
+            run_extreme "$dir-reference" || return 1
+            own='
+from sdfoam import foamcase
+t = foamcase.latestTime(case)
+worst = 0.0
+for name in ("n.fine", "n.coarse"):
+    a = foamcase.readScalarField(case, t, name)
+    b = foamcase.readScalarField(case + "-reference", t, name)
+    worst = max(worst, max(abs(x / 5e-13 - y / 0.3) for x, y in zip(a, b)))
+print("dilute / 5e-13 against dense without diffusion / 0.3 at t = %s: max difference %.2e" % (t, worst))
+ok &= worst <= 1e-8'
+            ;;
         packed|overPacked)
             # phi at random close packing (0.64) and above it (0.70)
             local half=0.32; [ "$kind" = overPacked ] && half=0.35
@@ -153,9 +172,38 @@ c = [r["n.coarse"] for r in rows]
 print("absent n.coarse: largest volume over the run %g" % max(c))
 ok &= max(c) == 0.0' ;;
         sizeRatio4|sizeRatio10)
-            # coarse 4 and 10 times the fines (percolation and sieving on)
-            extreme_case "$dir" 0.3 0.3
-            foamDictionary -entry species/coarse/d -set "${kind#sizeRatio}e-3" "$gp" > /dev/null ;;
+            # coarse 4 and 10 times the fines, with the size-dependent percolation of
+            # Schlick et al. (2015), S = C_s d_s ln(d_l/d_s), alone (no sieving, no
+            # diffusion; it acts where the flow shears, about z = 0.5), 0.05 s. Reference:
+            # the same case at ratio 2; early, the fines' centre of mass moves by
+            # S dt times the same sum, so the shifts are in the ratio ln(r)/ln(2), within 2 %
+            local ratio="${kind#sizeRatio}" d
+            for d in "$dir" "$dir-reference"
+            do
+                extreme_case "$d" 0.3 0.3
+                fixed_step "$d" 1e-3
+                foamDictionary -entry endTime -set 0.05 "$d/system/controlDict" > /dev/null
+                foamDictionary -entry writeInterval -set 0.025 "$d/system/controlDict" > /dev/null
+                foamDictionary -entry diffusivity -set "{ model none; }" "$d/constant/granularProperties" > /dev/null
+                foamDictionary -entry kineticSieving -set "{ model none; }" "$d/constant/granularProperties" > /dev/null
+                foamDictionary -entry percolation -set "{ model shearRate; shearRateCoeffs { C_s 0.26; } }" \
+                    "$d/constant/granularProperties" > /dev/null
+            done
+            foamDictionary -entry species/coarse/d -set "${ratio}e-3" "$gp" > /dev/null
+            run_extreme "$dir-reference" || return 1
+            own='
+import math
+from sdfoam import foamcase
+def shift(c):
+    t = foamcase.latestTime(c)
+    a0, a = (foamcase.readScalarField(c, s, "n.fine") for s in ("0", t))
+    z = [(k // 16 + 0.5) / 24 for k in range(len(a))]
+    return sum(x * h for x, h in zip(a0, z)) / sum(a0) - sum(x * h for x, h in zip(a, z)) / sum(a)
+r = shift(case) / shift(case + "-reference")
+expected = math.log('"$ratio"') / math.log(2)
+print("fines centre of mass moved %.4e m, at ratio 2 %.4e m: ratio %.4f, ln(r)/ln(2) = %.4f" % (shift(case), shift(case + "-reference"), r, expected))
+ok &= abs(r / expected - 1) <= 0.02'
+            ;;
         threeSpecies|fourSpecies)
             extreme_case "$dir" 0.2 0.2
             add_species "$dir" medium 1.5e-3 0.2
