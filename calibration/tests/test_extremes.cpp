@@ -7,7 +7,7 @@
 //   much without asserting it: the kicks' steering counts the elastic energy the contacts
 //   store in the first steps as dissipation and puts it back, and an almost elastic cell
 //   loses the excess only at its slow collisional cooling rate (T/T_target 1.8 after
-//   14000 steps from a contact-free start; docs/validation.md, extremes table);
+//   14000 steps from a relaxed packing; docs/validation.md, extremes table);
 // - the time step at the stability limit runs and conserves the energy of an elastic,
 //   frictionless cell; above it, it is refused naming timeStep and the limit.
 #include "TestCells.hpp"
