@@ -98,7 +98,8 @@ void addVelocitySums(const Particles& p, int begin, int end, double* sum)
     {
         const double m = p.mass[i], vx = p.vx[i], vy = p.vy[i], vz = p.vz[i];
         sum[0] += m; sum[1] += m*vx; sum[2] += m*vy; sum[3] += m*vz;
-        sum[4] += vx; sum[5] += vy; sum[6] += vz; sum[7] += vx*vx + vy*vy + vz*vz;
+        const double v2 = vx*vx + vy*vy + vz*vz;
+        sum[4] += vx; sum[5] += vy; sum[6] += vz; sum[7] += v2; sum[8] += m*v2;
     }
 }
 
@@ -161,6 +162,14 @@ double temperatureAboutMean(const VelocityChunkSums::Totals& total, int n, doubl
         total[7] - 2*(u[0]*total[4] + u[1]*total[5] + u[2]*total[6])
       + n*(u[0]*u[0] + u[1]*u[1] + u[2]*u[2]);
     return sumC2/n;
+}
+
+double kineticEnergyAboutMean(const VelocityChunkSums::Totals& total)
+{
+    if (!(total[0] > 0)) return 0;
+    // sum m |v - u|^2 = sum m |v|^2 - |sum m v|^2/M
+    const double p2 = total[1]*total[1] + total[2]*total[2] + total[3]*total[3];
+    return 0.5*std::max(0.0, total[8] - p2/total[0]);
 }
 
 // ---------------------------------------------------------------- thermostat

@@ -85,6 +85,14 @@ public:
     //  velocities; the ranges of different threads are disjoint.
     virtual void finishRange(const Particles& /*particles*/, int /*begin*/, int /*end*/) {}
 
+    // --- the contacts' elastic energy, for a driving that balances energy
+    //- Whether the coming afterStep wants the contacts' elastic energy (asked every step,
+    //  so that a driving wanting it on some steps only leaves the others free of its pass)
+    virtual bool wantsElasticEnergy() const { return false; }
+    //- The elastic energy of the contacts (and walls) at the end of the step [J], given
+    //  just before afterStep when wantsElasticEnergy()
+    virtual void setElasticEnergy(double /*energy*/) {}
+
     // --- after the step
     virtual void afterStep(Particles& /*particles*/, int /*nThreads*/) {}
 
@@ -95,12 +103,13 @@ public:
 };
 
 //- Sums over the particles per fixed chunk of Driving::finishChunk, added in chunk order
-//  (the same totals whatever the threads): mass, mass x velocity, velocity, |velocity|^2.
+//  (the same totals whatever the threads): mass, mass x velocity, velocity, |velocity|^2,
+//  mass x |velocity|^2.
 //  Filled by the force pass's finish while the velocities are in cache, or afterwards.
 class VelocityChunkSums
 {
 public:
-    static constexpr int size = 8;
+    static constexpr int size = 9;
     using Totals = std::array<double, size>;
 
     //- As Driving::beginForcePass: true when the pass ends the step (fill then).
@@ -120,6 +129,9 @@ private:
 //- T = <|v - u|^2> (sum of 3 components) of n particles about their mass-weighted mean
 //  velocity u (written to u), from VelocityChunkSums' totals; 0 without mass.
 double temperatureAboutMean(const VelocityChunkSums::Totals& total, int n, double u[3]);
+
+//- K = 1/2 sum m |v - u|^2 about the mass-weighted mean velocity u, from the same totals.
+double kineticEnergyAboutMean(const VelocityChunkSums::Totals& total);
 
 //- No driving: Newtonian dynamics of the cell.
 class NoDriving : public Driving

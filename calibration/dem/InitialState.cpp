@@ -221,22 +221,74 @@ Packing makePacking(const std::vector<Species>& species, const PackingSettings& 
     return packing;
 }
 
+namespace
+{
+
+//- Per species: its mean velocity removed (so the total momentum stays 0) and its
+//  <|c|^2> set to lambda/m_s, lambda such that the number average is T.
+void equipartitionExactly(Particles& p, double temperature)
+{
+    const std::size_t n = p.size();
+    int nSpecies = 0;
+    for (int s : p.species) nSpecies = std::max(nSpecies, s + 1);
+    std::vector<double> count(nSpecies, 0), mass(nSpecies, 0), sum2(nSpecies, 0);
+    std::vector<Eigen::Vector3d> mean(nSpecies, Eigen::Vector3d::Zero());
+    for (std::size_t i = 0; i < n; ++i)
+    {
+        const int s = p.species[i];
+        count[s] += 1;
+        mass[s] += p.mass[i];
+        mean[s] += Eigen::Vector3d(p.vx[i], p.vy[i], p.vz[i]);
+    }
+    double inverseMassSum = 0;   // sum_s n_s/m_s
+    for (int s = 0; s < nSpecies; ++s)
+    {
+        if (count[s] == 0) continue;
+        mean[s] /= count[s];
+        inverseMassSum += count[s]*count[s]/mass[s];
+    }
+    for (std::size_t i = 0; i < n; ++i)
+    {
+        const Eigen::Vector3d& m = mean[p.species[i]];
+        p.vx[i] -= m.x(); p.vy[i] -= m.y(); p.vz[i] -= m.z();
+        sum2[p.species[i]] += p.vx[i]*p.vx[i] + p.vy[i]*p.vy[i] + p.vz[i]*p.vz[i];
+    }
+    const double lambda = temperature*double(n)/inverseMassSum;
+    std::vector<double> scale(nSpecies, 0);
+    for (int s = 0; s < nSpecies; ++s)
+    {
+        const double target = count[s] > 0 ? lambda*count[s]/mass[s] : 0;   // T_s
+        scale[s] = sum2[s] > 0 ? std::sqrt(target*count[s]/sum2[s]) : 0;
+    }
+    for (std::size_t i = 0; i < n; ++i)
+    {
+        const double f = scale[p.species[i]];
+        p.vx[i] *= f; p.vy[i] *= f; p.vz[i] *= f;
+    }
+}
+
+} // namespace
+
 void assignVelocities
 (
     Particles& p,
     const PeriodicBox& box,
     double temperature,
     double shearRate,
-    std::uint64_t seed
+    std::uint64_t seed,
+    VelocityPartition partition
 )
 {
     if (!(temperature >= 0)) throw std::invalid_argument("temperature must be >= 0");
     RandomStream random(seed ^ 0x9e3779b97f4a7c15ULL);
     const std::size_t n = p.size();
-    const double sigma = std::sqrt(temperature/3.0);
+    double meanMass = 0;
+    for (std::size_t i = 0; i < n; ++i) meanMass += p.mass[i]/double(n);
     double mx = 0, my = 0, mz = 0, mass = 0;
     for (std::size_t i = 0; i < n; ++i)
     {
+        const double sigma = partition == VelocityPartition::equipartition
+            ? std::sqrt(temperature/3.0*meanMass/p.mass[i]) : std::sqrt(temperature/3.0);
         p.vx[i] = sigma*random.normal();
         p.vy[i] = sigma*random.normal();
         p.vz[i] = sigma*random.normal();
@@ -251,11 +303,24 @@ void assignVelocities
         p.vx[i] -= mx; p.vy[i] -= my; p.vz[i] -= mz;
         sum += p.vx[i]*p.vx[i] + p.vy[i]*p.vy[i] + p.vz[i]*p.vz[i];
     }
-    // exact requested temperature
-    const double s = (sum > 0 && temperature > 0) ? std::sqrt(temperature*n/sum) : 0.0;
+    if (partition == VelocityPartition::equipartition)
+    {
+        // each species exactly at its share, T_s = lambda/m_s with the number average T:
+        // a species of a few dozen particles would otherwise start up to 20 % off it by
+        // chance, and the energy it then gives away or takes moves T
+        equipartitionExactly(p, temperature);
+    }
+    else
+    {
+        // exact requested temperature
+        const double s = (sum > 0 && temperature > 0) ? std::sqrt(temperature*n/sum) : 0.0;
+        for (std::size_t i = 0; i < n; ++i)
+        {
+            p.vx[i] *= s; p.vy[i] *= s; p.vz[i] *= s;
+        }
+    }
     for (std::size_t i = 0; i < n; ++i)
     {
-        p.vx[i] *= s; p.vy[i] *= s; p.vz[i] *= s;
         p.vx[i] += shearRate*(p.y[i] - 0.5*box.ly);
     }
 }

@@ -408,6 +408,10 @@ void Simulation::step()
     // forces F^{n+1} and the second half kick
     computeForces(false, true);
 
+    if (driving_->wantsElasticEnergy())
+    {
+        driving_->setElasticEnergy(elasticEnergy());
+    }
     driving_->afterStep(particles_, nThreads_);
 
     ++stepCount_;

@@ -73,7 +73,8 @@ void StochasticDriving::normals
 
 bool StochasticDriving::beginForcePass(int nParticles, bool endsStep)
 {
-    return sums_.begin(nParticles, endsStep);
+    // the velocity totals are read on kick steps only
+    return sums_.begin(nParticles, endsStep && (step_ + 1) % kickInterval == 0);
 }
 
 void StochasticDriving::finishRange(const Particles& p, int begin, int end)
@@ -81,34 +82,51 @@ void StochasticDriving::finishRange(const Particles& p, int begin, int end)
     sums_.addRange(p, begin, end);
 }
 
+bool StochasticDriving::wantsElasticEnergy() const
+{
+    return (step_ + 1) % kickInterval == 0;
+}
+
 void StochasticDriving::afterStep(Particles& p, int nThreads)
 {
     const int n = int(p.size());
     if (n < 2) return;
-    double u[3];
-    const double T = temperatureAboutMean(sums_.totals(p), n, u);
-
-    // Steering: the collisions' dissipation per step, L (the fall of T over a step), is
-    // taken as c T^(3/2) (a hard-sphere gas's), c = <L>/<T^(3/2)> averaged over all steps
-    // so far and then exponentially over tau; the kicks put back c T0^(3/2) a step plus a
-    // relaxation of T towards T0 over tau. At steady state T = T0 whatever the true
-    // dependence on T (c is measured at that state), and T follows its error at the
-    // rate of its own dissipation: no slow integral loop (putting back <L> itself
-    // recovered from the start-up's transient with a root of only (dt/tau)^2/(dt dL/dT)
-    // per step: T 4.5 % low after 16 tau at phi 0.5)
-    const double w = timeStep_/steeringTime_;
-    if (temperatureAfterKick_ >= 0)
-    {
-        const double weight = std::max(w, 1.0/double(std::max<std::uint64_t>(step_, 1)));
-        // (T can come out a rounding error below 0 in a cell at rest)
-        dissipation_ += weight*((temperatureAfterKick_ - T) - dissipation_);
-        temperaturePower_ += weight*(std::pow(std::max(T, 0.0), 1.5) - temperaturePower_);
-    }
     const std::uint64_t step = step_++;
-    if ((step + 1) % kickInterval != 0)
+    if ((step + 1) % kickInterval != 0) return;
+    const std::uint64_t kick = step/kickInterval;
+    // Theta = T (1 + E_el/K): T with the contacts' elastic energy counted in, at the
+    // present ratio T/K (K the peculiar kinetic energy)
+    const auto held = [this](double T, const VelocityChunkSums::Totals& totals)
     {
-        temperatureAfterKick_ = T;
-        return;
+        const double K = kineticEnergyAboutMean(totals);
+        return K > 0 ? T*(1 + elasticEnergy_/K) : T;
+    };
+    double u[3];
+    const VelocityChunkSums::Totals before = sums_.totals(p);
+    const double T = temperatureAboutMean(before, n, u);
+    // Steering: the collisions' dissipation per step, L (the fall of Theta over the kick
+    // interval, per step), is taken as c T^(3/2) (a hard-sphere gas's), c = <L>/<T^(3/2)>
+    // averaged over all intervals so far and then exponentially over tau; the kicks put
+    // back c T0^(3/2) a step plus a relaxation of T towards T0 over tau. At steady state
+    // T = T0 whatever the true dependence on T (c is measured at that state), and T
+    // follows its error at the rate of its own dissipation: no slow integral loop
+    // (putting back <L> itself recovered from the start-up's transient with a root of
+    // only (dt/tau)^2/(dt dL/dT) per step: T 4.5 % low after 16 tau at phi 0.5)
+    const double w = timeStep_/steeringTime_;
+    if (heldAfterKick_ >= 0)
+    {
+        const double weight = std::min
+        (
+            1.0, std::max(kickInterval*w, 1.0/double(std::max<std::uint64_t>(kick, 1)))
+        );
+        // (T can come out a rounding error below 0 in a cell at rest)
+        const double loss = (heldAfterKick_ - held(T, before))/kickInterval;
+        dissipation_ += weight*(loss - dissipation_);
+        // T^(3/2) averaged over the interval, T falling about linearly from its value after
+        // the last kicks to T now (as when it was averaged over every step; T now alone is
+        // the sawtooth's low point)
+        const double meanT = T + 0.5*kickInterval*loss;
+        temperaturePower_ += weight*(std::pow(std::max(meanT, 0.0), 1.5) - temperaturePower_);
     }
     const double restore = temperaturePower_ > 0
         ? dissipation_/temperaturePower_*std::pow(targetTemperature_, 1.5)
@@ -120,7 +138,6 @@ void StochasticDriving::afterStep(Particles& p, int nThreads)
     normalX_.resize(std::size_t(n));
     normalY_.resize(std::size_t(n));
     normalZ_.resize(std::size_t(n));
-    const std::uint64_t kick = step/kickInterval;
     const int nChunks = (n + finishChunk - 1)/finishChunk;
     std::vector<std::array<double, 5>> chunkSums(static_cast<std::size_t>(nChunks));
     #pragma omp parallel for num_threads(nThreads) schedule(static) if(nThreads > 1)
@@ -163,7 +180,8 @@ void StochasticDriving::afterStep(Particles& p, int nThreads)
         p.vy[i] += amplitude*normalY_[i] - uy;
         p.vz[i] += amplitude*normalZ_[i] - uz;
     }
-    temperatureAfterKick_ = temperatureAboutMean(VelocityChunkSums::sum(p), n, u);
+    const VelocityChunkSums::Totals after = VelocityChunkSums::sum(p);
+    heldAfterKick_ = held(temperatureAboutMean(after, n, u), after);
 }
 
 std::vector<double> StochasticDriving::exportState() const
@@ -172,7 +190,7 @@ std::vector<double> StochasticDriving::exportState() const
     // (a resume with another seed would change the kicks unnoticed)
     return
     {
-        double(step_), dissipation_, temperaturePower_, temperatureAfterKick_, kickVariance_,
+        double(step_), dissipation_, temperaturePower_, heldAfterKick_, kickVariance_,
         double(seed_ >> 32), double(seed_ & 0xffffffffULL)
     };
 }
@@ -184,7 +202,7 @@ void StochasticDriving::importState(const std::vector<double>& state)
         throw std::invalid_argument
         (
             "stochastic driving: a checkpoint's driving state holds 7 values (step,"
-            " dissipation, <T^1.5>, T after the kicks, kick variance, seed), got "
+            " dissipation, <T^1.5>, T and elastic energy after the kicks, kick variance, seed), got "
           + std::to_string(state.size())
         );
     }
@@ -200,7 +218,7 @@ void StochasticDriving::importState(const std::vector<double>& state)
     step_ = std::uint64_t(state[0]);
     dissipation_ = state[1];
     temperaturePower_ = state[2];
-    temperatureAfterKick_ = state[3];
+    heldAfterKick_ = state[3];
     kickVariance_ = state[4];
 }
 

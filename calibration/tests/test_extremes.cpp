@@ -2,12 +2,11 @@
 // extremes are tests/solver/extremes.sh; the table of both is in docs/validation.md):
 // - restitution 0.1 and 0.99 with friction 0 and 1: a stochastically driven binary cell
 //   keeps its momentum, every coordinate finite, overlaps small and the spin bounded (no
-//   energy created by the tangential springs); at restitution 0.1 it is held at the
-//   target T (time average within 1 %). At 0.99 it is not, and the test prints by how
-//   much without asserting it: the kicks' steering counts the elastic energy the contacts
-//   store in the first steps as dissipation and puts it back, and an almost elastic cell
-//   loses the excess only at its slow collisional cooling rate (T/T_target 1.8 after
-//   14000 steps from a relaxed packing; docs/validation.md, extremes table);
+//   energy created by the tangential springs), and is held at the target T: its time
+//   average within 1 % at restitution 0.1, within 5 % at 0.99. Started as a cell run
+//   starts a stochastically driven cell (at equipartition, InitialState.hpp) and steered
+//   on the energy it holds, kinetic and elastic (StochasticDriving.hpp); before both, a
+//   cell started at equal velocities sat at 1.81 T0 at restitution 0.99 after 14000 steps;
 // - the time step at the stability limit runs and conserves the energy of an elastic,
 //   frictionless cell; above it, it is refused naming timeStep and the limit.
 #include "TestCells.hpp"
@@ -46,7 +45,13 @@ TEST_P(ContactExtremes, DrivenCellHeldAtTargetFiniteAndBounded)
     const auto [restitution, friction] = GetParam();
     const auto species = test::binary(2.0);
     const double target = 0.02;
-    Packing packing = test::packedCell(species, {300, 40}, 0.3, target, 0, 17);
+    // started as a cell run starts a stochastically driven cell: at equipartition
+    PackingSettings ps;
+    ps.solidsFraction = 0.3;
+    ps.counts = {300, 40};
+    ps.seed = 17;
+    Packing packing = makePacking(species, ps);
+    assignVelocities(packing.particles, packing.box, target, 0, 17, VelocityPartition::equipartition);
     SimulationSettings s = test::softContacts(restitution, friction);
     s.mode = CellMode::stochastic;
     s.targetTemperature = target;
@@ -82,10 +87,10 @@ TEST_P(ContactExtremes, DrivenCellHeldAtTargetFiniteAndBounded)
               << ", max overlap / d = " << maxOverlap
               << ", max rotational / translational kinetic energy = " << maxSpinRatio << "\n";
     ASSERT_TRUE(allFinite(sim.particles()));
-    if (restitution < 0.5)
-    {
-        EXPECT_NEAR(meanT/target, 1.0, 0.01);
-    }
+    // A nearly elastic cell still gains about 5 % of its energy in its first 100 steps
+    // with no kick (not the stored elastic energy, which the steering now counts), and
+    // loses it only at its collisional cooling rate, (1 - e^2) times slower than at e 0.1
+    EXPECT_NEAR(meanT/target, 1.0, restitution < 0.5 ? 0.01 : 0.05);
     EXPECT_LT(drift, 1e-10);
     // the tests' soft springs keep overlaps well below the 10 % stop at these speeds
     EXPECT_LT(maxOverlap, 0.05);

@@ -381,7 +381,14 @@ Packing initialCell(const CellRunSettings& settings, double T0)
     Packing packing = makePacking(settings.species, ps);
     const SimulationSettings& sim = settings.simulation;
     const double shearRate = sim.mode == CellMode::leesEdwards ? sim.shearRate : 0.0;
-    assignVelocities(packing.particles, packing.box, T0, shearRate, settings.seed);
+    // a stochastically driven cell starts at equipartition (InitialState.hpp: its kicks
+    // cannot take back the energy the collisions would otherwise release)
+    assignVelocities
+    (
+        packing.particles, packing.box, T0, shearRate, settings.seed,
+        sim.mode == CellMode::stochastic
+      ? VelocityPartition::equipartition : VelocityPartition::equalVelocities
+    );
     if (!settings.lammpsDataFile.empty())
     {
         writeLammpsData

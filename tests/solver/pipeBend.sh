@@ -401,7 +401,8 @@ from sdfoam.foamcase import readScalarField
 a = readScalarField('$dir/pass', '0.05', 'alphaPass.d500um')
 sys.exit(0 if max(a) == 0 else 1)" || { echo "emptyClass: alphaPass.d500um is not 0"; return 1; }
     bend_solve "$dir" || return 1
-    grep -q "n.d500um volume 0 " "$dir/log.solver" && { echo "emptyClass: d500um gained no fragments"; return 1; }
+    grep "^Solids:" "$dir/log.solver" | tail -1 | grep -q "n.d500um volume 0 " \
+        && { echo "emptyClass: d500um gained no fragments"; return 1; }
     return 0
 }
 
