@@ -91,7 +91,7 @@ namespace
 {
 
 //- Adds the sums over particles [begin, end) to sum: mass, mass x velocity, velocity,
-//  |velocity|^2.
+//  |velocity|^2, mass x |velocity|^2.
 void addVelocitySums(const Particles& p, int begin, int end, double* sum)
 {
     for (int i = begin; i < end; ++i)

@@ -225,7 +225,8 @@ namespace
 {
 
 //- Per species: its mean velocity removed (so the total momentum stays 0) and its
-//  <|c|^2> set to lambda/m_s, lambda such that the number average is T.
+//  <|c|^2> set to lambda/m_s, lambda such that the number average over all particles is
+//  T (the particle of a one-particle species stays at rest).
 void equipartitionExactly(Particles& p, double temperature)
 {
     const std::size_t n = p.size();
@@ -240,12 +241,9 @@ void equipartitionExactly(Particles& p, double temperature)
         mass[s] += p.mass[i];
         mean[s] += Eigen::Vector3d(p.vx[i], p.vy[i], p.vz[i]);
     }
-    double inverseMassSum = 0;   // sum_s n_s/m_s
     for (int s = 0; s < nSpecies; ++s)
     {
-        if (count[s] == 0) continue;
-        mean[s] /= count[s];
-        inverseMassSum += count[s]*count[s]/mass[s];
+        if (count[s] > 0) mean[s] /= count[s];
     }
     for (std::size_t i = 0; i < n; ++i)
     {
@@ -253,11 +251,30 @@ void equipartitionExactly(Particles& p, double temperature)
         p.vx[i] -= m.x(); p.vy[i] -= m.y(); p.vz[i] -= m.z();
         sum2[p.species[i]] += p.vx[i]*p.vx[i] + p.vy[i]*p.vy[i] + p.vz[i]*p.vz[i];
     }
+    // sum_s n_s/m_s over the species that can move (a species of one particle has no
+    // fluctuation about its own mean: it stays at rest and T is shared by the others)
+    double inverseMassSum = 0;
+    for (int s = 0; s < nSpecies; ++s)
+    {
+        if (sum2[s] > 0) inverseMassSum += count[s]*count[s]/mass[s];
+    }
+    if (!(inverseMassSum > 0))
+    {
+        if (temperature > 0)
+        {
+            throw std::invalid_argument
+            (
+                "assignVelocities: no species with two or more particles to carry the"
+                " temperature at equipartition"
+            );
+        }
+        return;
+    }
     const double lambda = temperature*double(n)/inverseMassSum;
     std::vector<double> scale(nSpecies, 0);
     for (int s = 0; s < nSpecies; ++s)
     {
-        const double target = count[s] > 0 ? lambda*count[s]/mass[s] : 0;   // T_s
+        const double target = sum2[s] > 0 ? lambda*count[s]/mass[s] : 0;   // T_s
         scale[s] = sum2[s] > 0 ? std::sqrt(target*count[s]/sum2[s]) : 0;
     }
     for (std::size_t i = 0; i < n; ++i)

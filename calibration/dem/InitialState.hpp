@@ -62,10 +62,11 @@ enum class VelocityPartition
 //- Maxwellian fluctuating velocities with <|c|^2> = T over all particles (T1 = T/3 per
 //  component), zero total momentum, plus the Lees-Edwards streaming profile
 //  shearRate (y - ly/2) in x. With equipartition the heavier particles move slower (each
-//  species' <|c|^2> exactly inversely proportional to its mass): a stochastically driven cell starts there, because its kicks
-//  can add energy but not remove it, and from equal velocities the collisions' exchange
-//  towards equipartition raises the number-averaged T of a binary 1:2 cell up to 1.7
-//  times with no energy added, which a nearly elastic cell loses only slowly.
+//  species' <|c|^2> exactly inversely proportional to its mass; a one-particle species
+//  stays at rest): a stochastically driven cell starts there, because its kicks can add
+//  energy but not remove it, and from equal velocities the collisions' exchange towards
+//  equipartition raises the number-averaged T of a binary 1:2 cell up to 1.7 times with
+//  no energy added, which a nearly elastic cell loses only slowly.
 void assignVelocities
 (
     Particles& particles,

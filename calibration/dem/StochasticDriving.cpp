@@ -187,22 +187,34 @@ void StochasticDriving::afterStep(Particles& p, int nThreads)
 std::vector<double> StochasticDriving::exportState() const
 {
     // the step count as a double: exact below 2^53 steps; the seed in two exact halves
-    // (a resume with another seed would change the kicks unnoticed)
+    // (a resume with another seed would change the kicks unnoticed); the format last
     return
     {
         double(step_), dissipation_, temperaturePower_, heldAfterKick_, kickVariance_,
-        double(seed_ >> 32), double(seed_ & 0xffffffffULL)
+        double(seed_ >> 32), double(seed_ & 0xffffffffULL), double(stateFormat)
     };
 }
 
 void StochasticDriving::importState(const std::vector<double>& state)
 {
-    if (state.size() != 7)
+    if (state.size() == 7)
+    {
+        // format 1 held T after the kicks where format 2 holds Theta: resumed, the first
+        // interval would be steered on a wrong loss and the run not continued bitwise
+        throw std::invalid_argument
+        (
+            "stochastic driving: the checkpoint's driving state is of the engine before its"
+            " steering counted the contacts' elastic energy (7 values): run the condition"
+            " again from its start (delete the checkpoint)"
+        );
+    }
+    if (state.size() != 8 || state[7] != double(stateFormat))
     {
         throw std::invalid_argument
         (
-            "stochastic driving: a checkpoint's driving state holds 7 values (step,"
-            " dissipation, <T^1.5>, T and elastic energy after the kicks, kick variance, seed), got "
+            "stochastic driving: a checkpoint's driving state holds 8 values (step,"
+            " dissipation, <T^1.5>, Theta after the kicks (T with the elastic energy), kick"
+            " variance, seed in two halves, format " + std::to_string(stateFormat) + "), got "
           + std::to_string(state.size())
         );
     }

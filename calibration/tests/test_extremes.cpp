@@ -51,7 +51,10 @@ TEST_P(ContactExtremes, DrivenCellHeldAtTargetFiniteAndBounded)
     ps.counts = {300, 40};
     ps.seed = 17;
     Packing packing = makePacking(species, ps);
-    assignVelocities(packing.particles, packing.box, target, 0, 17, VelocityPartition::equipartition);
+    assignVelocities
+    (
+        packing.particles, packing.box, target, 0, 17, VelocityPartition::equipartition
+    );
     SimulationSettings s = test::softContacts(restitution, friction);
     s.mode = CellMode::stochastic;
     s.targetTemperature = target;
@@ -94,8 +97,9 @@ TEST_P(ContactExtremes, DrivenCellHeldAtTargetFiniteAndBounded)
     EXPECT_LT(drift, 1e-10);
     // the tests' soft springs keep overlaps well below the 10 % stop at these speeds
     EXPECT_LT(maxOverlap, 0.05);
-    // equipartition with rotation (solid spheres) gives rotational/translational 2/3 at
-    // most for rough grains; frictionless grains keep their initial zero spin
+    // the kicks feed translation only and friction passes part of it to rotation, which
+    // stays below translation (equipartition between them would give 1); frictionless
+    // grains keep their initial zero spin
     if (friction == 0.0)
     {
         EXPECT_EQ(maxSpinRatio, 0.0);

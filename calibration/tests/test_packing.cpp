@@ -103,3 +103,35 @@ TEST(Packing, VelocitiesHaveRequestedTemperatureAndNoMomentum)
     EXPECT_NEAR(py, 0, 1e-18);
     EXPECT_NEAR(pz, 0, 1e-18);
 }
+
+TEST(Packing, EquipartitionGivesEachSpeciesItsShareExactly)
+{
+    // each species' <|c|^2> inversely proportional to its mass (coarse 8 times heavier:
+    // T_fine = 8 T_coarse), the number average T exact, no momentum; a species of one
+    // particle stays at rest and the others carry T
+    const auto species = std::vector<Species>{{"fine", 1e-3, 2500}, {"coarse", 2e-3, 2500},
+                                              {"lone", 3e-3, 2500}};
+    for (const std::vector<int>& counts : {std::vector<int>{200, 25, 0}, std::vector<int>{200, 25, 1}})
+    {
+        PackingSettings ps;
+        ps.solidsFraction = 0.2;
+        ps.counts = counts;
+        Packing p = makePacking(species, ps);
+        assignVelocities(p.particles, p.box, 4e-3, 0, 5, VelocityPartition::equipartition);
+        const Particles& q = p.particles;
+        std::vector<double> sum(3, 0);
+        double all = 0;
+        Eigen::Vector3d momentum = Eigen::Vector3d::Zero();
+        for (std::size_t i = 0; i < q.size(); ++i)
+        {
+            const double c2 = q.vx[i]*q.vx[i] + q.vy[i]*q.vy[i] + q.vz[i]*q.vz[i];
+            sum[q.species[i]] += c2;
+            all += c2;
+            momentum += q.mass[i]*Eigen::Vector3d(q.vx[i], q.vy[i], q.vz[i]);
+        }
+        EXPECT_NEAR(all/q.size(), 4e-3, 1e-15);
+        EXPECT_NEAR((sum[0]/counts[0])/(sum[1]/counts[1]), 8.0, 1e-12);
+        EXPECT_EQ(sum[2], 0.0);
+        EXPECT_LT(momentum.norm(), 1e-18);
+    }
+}

@@ -86,7 +86,8 @@ void validateCellRunSettings(const CellRunSettings& settings);
 //- Mean diameter of the species weighted by their solids volume fractions.
 double meanDiameter(const CellRunSettings& settings);
 
-//- The cell's packing at its solids fraction with Maxwellian velocities at T0 (plus the
+//- The cell's packing at its solids fraction with Maxwellian velocities at T0 (at
+//  equipartition for a stochastically driven cell, InitialState.hpp; plus the
 //  streaming profile if sheared); also written as a LAMMPS data file if
 //  settings.lammpsDataFile is set. runCell's start; other drivers of a Simulation
 //  (apps/kineticSievingCell.cpp) start from it too.

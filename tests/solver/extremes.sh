@@ -61,14 +61,16 @@ run_extreme()
     segregationDegradationFoam -case "$dir" > "$dir/log.solver" 2>&1 || { tail -30 "$dir/log.solver"; return 1; }
 }
 
-# check_extreme DIR [perSpecies|totalOnly] [PYTHON]: bounds, no non-finite value,
-# conservation (each species, or only the total with breakage) to 1e-10 relative; then
+# check_extreme DIR [perSpecies|totalOnly] [PYTHON] [BOUNDS_TOLERANCE]: bounds (to
+# BOUNDS_TOLERANCE, default 1e-8: absolute, so the trace cases pass 1e-8 of their
+# amplitude), no non-finite value, conservation (each species, or only the total with
+# breakage) to 1e-10 relative; then
 # the case's own check PYTHON, run with the step rows in `rows` (dicts: total and each
 # n.<species>, from the "Initial solids:" line on) and `case` (the case directory)
 check_extreme()
 {
-    local dir="$1" conserved="${2:-perSpecies}" own="${3:-}"
-    python3 -m sdfoam.fieldStats "$dir" bounds --tol 1e-8 || return 1
+    local dir="$1" conserved="${2:-perSpecies}" own="${3:-}" tolerance="${4:-1e-8}"
+    python3 -m sdfoam.fieldStats "$dir" bounds --tol "$tolerance" || return 1
     python3 - "$dir" "$conserved" "$own" <<'PY'
 import re, sys
 case, conserved, own = sys.argv[1], sys.argv[2], sys.argv[3]
@@ -104,7 +106,7 @@ PY
 test_extreme()
 {
     local kind="$1" dir="$workRoot/extremes-$1"
-    local gp="$dir/constant/granularProperties" conserved=perSpecies own=""
+    local gp="$dir/constant/granularProperties" conserved=perSpecies own="" bounds=1e-8
     case "$kind" in
         noDiffusionCo1|noDiffusionCo5|noDiffusionCo50)
             # Pe -> infinity: no diffusion, a fixed step at Courant number 1, 5, 50 of the
@@ -112,8 +114,11 @@ test_extreme()
             # up to that Courant number too), 25 s: long past the layer's segregation
             # time. Exact end state without diffusion: fully segregated, the fines' 9.5
             # rows (of the layer's 19 at n = 0.6) at the base, their centre of mass at
-            # z = 0.1985 m; within 0.01 m (a quarter of a row)
-            local co="${kind#noDiffusionCo}"
+            # z = 0.1985 m: within 1e-3 m at Courant 1 and 5. At 50 the explicit, limited
+            # exchange stalls with three rows mixed 0.3/0.3 at the interface (0.2029 m):
+            # held to that, within 5e-3 m, so that a worse stall fails
+            local co="${kind#noDiffusionCo}" tolerance=1e-3
+            [ "$co" = 50 ] && tolerance=5e-3
             extreme_case "$dir" 0.3 0.3
             foamDictionary -entry diffusivity -set "{ model none; }" "$gp" > /dev/null
             fixed_step "$dir" "$(python3 -c "print($co/16)")"
@@ -124,11 +129,12 @@ from sdfoam import foamcase
 t = foamcase.latestTime(case)
 fine = foamcase.readScalarField(case, t, "n.fine")
 z = [(k // 16 + 0.5) / 24 for k in range(len(fine))]   # blockMesh order: x fastest
-rows = 19                                                # cell centres below z = 0.8
-exact = (0.6 * sum(j + 0.5 for j in range(9)) + 0.3 * 9.5) / (0.6 * rows / 2) / 24
+layerRows = 19                                           # cell centres below z = 0.8
+exact = (0.6 * sum(j + 0.5 for j in range(9)) + 0.3 * 9.5) / (0.6 * layerRows / 2) / 24
 zc = sum(f * h for f, h in zip(fine, z)) / sum(fine)
-print("fines centre of mass at t = %s: %.4f m, fully segregated %.4f m" % (t, zc, exact))
-ok &= abs(zc - exact) <= 0.01'
+print("fines centre of mass at t = %s: %.4f m, fully segregated %.4f m (tolerance %g m)"
+      % (t, zc, exact, '"$tolerance"'))
+ok &= abs(zc - exact) <= '"$tolerance"''
             ;;
         dilute)
             # phi -> 0: 1e-12 solids in the layer. The diffusivity vanishes with the
@@ -137,6 +143,7 @@ ok &= abs(zc - exact) <= 0.01'
             # reference, the dense layer (0.3 + 0.3) without diffusion, scaled by
             # 5e-13/0.3, within 1e-8 of the dense values
             extreme_case "$dir" 5e-13 5e-13
+            bounds=5e-21
             extreme_case "$dir-reference" 0.3 0.3
             foamDictionary -entry diffusivity -set "{ model none; }" \
                 "$dir-reference/constant/granularProperties" > /dev/null
@@ -163,7 +170,8 @@ ok &= worst <= 1e-8'
                 extreme_case "$dir" 6e-10 0.6
             else
                 extreme_case "$dir" 0.6 6e-10
-            fi ;;
+            fi
+            bounds=6e-18 ;;
         absentSpecies)
             # a species absent everywhere: it stays exactly 0, the other is conserved
             extreme_case "$dir" 0.6 0
@@ -230,5 +238,5 @@ ok &= c1 / c0 <= 1.5e-6 and abs(rows[-1]["n.fine"] - rows[0]["total"]) <= 1e-10 
             echo "test_extreme: unknown kind $kind"; return 1 ;;
     esac
     run_extreme "$dir" || return 1
-    check_extreme "$dir" "$conserved" "$own"
+    check_extreme "$dir" "$conserved" "$own" "$bounds"
 }
