@@ -74,7 +74,7 @@ void StochasticDriving::normals
 bool StochasticDriving::beginForcePass(int nParticles, bool endsStep)
 {
     // the velocity totals are read on kick steps only
-    return sums_.begin(nParticles, endsStep && (step_ + 1) % kickInterval == 0);
+    return sums_.begin(nParticles, endsStep && kicksThisStep());
 }
 
 void StochasticDriving::finishRange(const Particles& p, int begin, int end)
@@ -82,17 +82,23 @@ void StochasticDriving::finishRange(const Particles& p, int begin, int end)
     sums_.addRange(p, begin, end);
 }
 
-bool StochasticDriving::wantsElasticEnergy() const
+bool StochasticDriving::kicksThisStep() const
 {
     return (step_ + 1) % kickInterval == 0;
+}
+
+bool StochasticDriving::wantsElasticEnergy() const
+{
+    return kicksThisStep();
 }
 
 void StochasticDriving::afterStep(Particles& p, int nThreads)
 {
     const int n = int(p.size());
     if (n < 2) return;
+    const bool kicks = kicksThisStep();
     const std::uint64_t step = step_++;
-    if ((step + 1) % kickInterval != 0) return;
+    if (!kicks) return;
     const std::uint64_t kick = step/kickInterval;
     // Theta = T (1 + E_el/K): T with the contacts' elastic energy counted in, at the
     // present ratio T/K (K the peculiar kinetic energy)

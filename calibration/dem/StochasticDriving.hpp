@@ -91,6 +91,9 @@ public:
     static void normals(std::uint64_t seed, std::uint64_t kick, std::uint64_t id, double out[3]);
 
 private:
+    //- The step being driven (step_ + 1 of the steps so far) ends with kicks.
+    bool kicksThisStep() const;
+
     double targetTemperature_;
     double steeringTime_;
     double timeStep_;

@@ -8,7 +8,8 @@
 #   conservative  the closed box's solids volume (each species' without breakage) equal
 #                 to its initial value to 1e-10 relative over every step (the solver's
 #                 "Solids:" lines, 15 digits),
-# and, where an exact or reference value exists, meets it (per case below). The
+# (closed_box_run and closed_box_check of tests/solver/closedBox.sh) and, where an
+# exact or reference value exists, meets it (per case below). The
 # matrix with the observed values is the extremes table of docs/validation.md; the
 # DEM's extremes are calibration/tests/test_extremes.cpp.
 
@@ -49,57 +50,6 @@ fixed_step()
 {
     foamDictionary -entry adjustTimeStep -set no "$1/system/controlDict" > /dev/null
     foamDictionary -entry deltaT -set "$2" "$1/system/controlDict" > /dev/null
-}
-
-# run_extreme DIR: mesh, initial fields, solver (log in DIR/log.solver)
-run_extreme()
-{
-    local dir="$1"
-    blockMesh -case "$dir" > "$dir/log.blockMesh" 2>&1 || { cat "$dir/log.blockMesh"; return 1; }
-    cp -r "$dir/0.orig" "$dir/0"
-    setFields -case "$dir" > "$dir/log.setFields" 2>&1 || { cat "$dir/log.setFields"; return 1; }
-    segregationDegradationFoam -case "$dir" > "$dir/log.solver" 2>&1 || { tail -30 "$dir/log.solver"; return 1; }
-}
-
-# check_extreme DIR [perSpecies|totalOnly] [PYTHON] [BOUNDS_TOLERANCE]: bounds (to
-# BOUNDS_TOLERANCE, default 1e-8: absolute, so the trace cases pass 1e-8 of their
-# amplitude), no non-finite value, conservation (each species, or only the total with
-# breakage) to 1e-10 relative; then
-# the case's own check PYTHON, run with the step rows in `rows` (dicts: total and each
-# n.<species>, from the "Initial solids:" line on) and `case` (the case directory)
-check_extreme()
-{
-    local dir="$1" conserved="${2:-perSpecies}" own="${3:-}" tolerance="${4:-1e-8}"
-    python3 -m sdfoam.fieldStats "$dir" bounds --tol "$tolerance" || return 1
-    python3 - "$dir" "$conserved" "$own" <<'PY'
-import re, sys
-case, conserved, own = sys.argv[1], sys.argv[2], sys.argv[3]
-rows = []
-for line in open(case + "/log.solver"):
-    if line.startswith("Solids:") or line.startswith("Initial solids:"):
-        row = {"total": float(re.search(r"total volume (\S+)", line).group(1))}
-        for name, v in re.findall(r"(n\.\w+) volume (\S+)", line):
-            row[name] = float(v)
-        rows.append(row)
-if len(rows) < 3:
-    print("FAIL: fewer than 2 steps in the log"); sys.exit(1)
-species = sorted(k for k in rows[0] if k != "total")
-if not species or any(sorted(k for k in r if k != "total") != species for r in rows):
-    print("FAIL: the species' volumes are not on every line from the initial one"); sys.exit(1)
-keys = ["total"] + ([] if conserved == "totalOnly" else species)
-ok = True
-for k in keys:
-    first = rows[0][k]
-    worst = max(abs(r[k] - first) for r in rows)
-    rel = worst / first if first > 0 else worst
-    print("%s: initial %.6e, max %s change over %d steps %.2e"
-          % (k, first, "relative" if first > 0 else "absolute", len(rows) - 1, rel))
-    # an absent species stays exactly 0
-    ok &= rel <= (1e-10 if first > 0 else 0.0)
-if own:
-    exec(own)
-sys.exit(0 if ok else 1)
-PY
 }
 
 # test_extreme KIND: one row of the matrix
@@ -147,7 +97,7 @@ ok &= abs(zc - exact) <= '"$tolerance"''
             extreme_case "$dir-reference" 0.3 0.3
             foamDictionary -entry diffusivity -set "{ model none; }" \
                 "$dir-reference/constant/granularProperties" > /dev/null
-            run_extreme "$dir-reference" || return 1
+            closed_box_run "$dir-reference" || return 1
             own='
 from sdfoam import foamcase
 t = foamcase.latestTime(case)
@@ -198,7 +148,7 @@ ok &= max(c) == 0.0' ;;
                     "$d/constant/granularProperties" > /dev/null
             done
             foamDictionary -entry species/coarse/d -set "${ratio}e-3" "$gp" > /dev/null
-            run_extreme "$dir-reference" || return 1
+            closed_box_run "$dir-reference" || return 1
             own='
 import math
 from sdfoam import foamcase
@@ -237,6 +187,6 @@ ok &= c1 / c0 <= 1.5e-6 and abs(rows[-1]["n.fine"] - rows[0]["total"]) <= 1e-10 
         *)
             echo "test_extreme: unknown kind $kind"; return 1 ;;
     esac
-    run_extreme "$dir" || return 1
-    check_extreme "$dir" "$conserved" "$own" "$bounds"
+    closed_box_run "$dir" || return 1
+    closed_box_check "$dir" "$conserved" "$own" "$bounds"
 }
