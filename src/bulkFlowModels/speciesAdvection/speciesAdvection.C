@@ -26,6 +26,7 @@
 namespace Foam
 {
     defineTypeNameAndDebug(sharedWeights, 0);
+    defineTypeNameAndDebug(speciesAdvection, 0);
 }
 
 const Foam::word Foam::speciesAdvection::schemeName_("div(phi,n)");
@@ -39,6 +40,13 @@ const Foam::word Foam::speciesAdvection::laplacianName_("laplacian(D,n)");
 const Foam::scalar Foam::speciesAdvection::emptyWeight_ = 1e-14;
 
 const Foam::scalar Foam::speciesAdvection::bulkCellAlpha_ = 0.5;
+
+// The correction vectors of a blockMesh box are round-off (3.1e-13 on a
+// 400 x 400 unit square, growing with the cells across it), not a
+// correction worth a gradient per species per step: |k| is the sine of the
+// face's non-orthogonality, and 1e-10 rad changes a face's diffusion flux
+// by at most 1e-10 of itself, the species' solver tolerance
+const Foam::scalar Foam::speciesAdvection::nonOrthogonalTolerance_ = 1e-10;
 const Foam::scalar Foam::speciesAdvection::undershootTolerance_ = 1e-10;
 
 
@@ -111,11 +119,13 @@ void Foam::speciesAdvection::correctWeights
             &gauss->interpScheme()
         );
 
-    if (!limited)
+    if (!limited || (n.size() < 2 && !freeSurface))
     {
-        // Field-independent weights: OpenFOAM's path, or the same weights
-        // kept for the bulk fraction's interpolation
-        if (freeSurface)
+        // Field-independent weights (or one species' own limited ones):
+        // OpenFOAM's, kept for the operator the species share and for the
+        // bulk fraction's interpolation. An explicit correction (e.g.
+        // linearUpwind) is the species' own: OpenFOAM's path
+        if (!gauss->interpScheme().corrected())
         {
             weights_.reset
             (
@@ -126,10 +136,6 @@ void Foam::speciesAdvection::correctWeights
                 )
             );
         }
-        return;
-    }
-    if (n.size() < 2 && !freeSurface)
-    {
         return;
     }
 
@@ -509,10 +515,21 @@ Foam::speciesAdvection::speciesAdvection
     nonOrthogonal_
     (
         gMax(mag(mixture.mesh().nonOrthCorrectionVectors())().primitiveField())
-      > 0
+      > nonOrthogonalTolerance_
     ),
-    diffusionTimeIndex_(-1)
+    diffusionTimeIndex_(-1),
+    operatorDf_(nullptr),
+    operatorEuler_(false),
+    operatorTimeIndex_(-1)
 {
+    if (debug)
+    {
+        Info<< "speciesAdvection: largest non-orthogonal correction vector "
+            << gMax(mag(mixture.mesh().nonOrthCorrectionVectors())().primitiveField())
+            << " (corrections " << (nonOrthogonal_ ? "on" : "off") << ")"
+            << endl;
+    }
+
     if (!freeSurface())
     {
         return;
@@ -799,6 +816,234 @@ Foam::tmp<Foam::fvScalarMatrix> Foam::speciesAdvection::fvmLaplacian
             )().primitiveField();
     }
     return tnEqn;
+}
+
+
+bool Foam::speciesAdvection::correctOperator
+(
+    const surfaceScalarField& Df,
+    const bool diffusion
+)
+{
+    operatorTimeIndex_ = -1;
+    sharedOperator_.clear();
+    operatorGammaMagSf_.clear();
+    operatorDeltaCoeffs_.clear();
+
+    // Shared weights are kept for Gauss schemes without an explicit
+    // correction (correctWeights): only then do the species' matrices
+    // differ in nothing but their boundary values and sources
+    if (freeSurface() || bulkFlow_.speciesFluxes() || !weights_.valid())
+    {
+        return false;
+    }
+
+    const fvMesh& mesh = mixture_.mesh();
+    const volScalarField& n0 = mixture_.n()[0];
+
+    // OpenFOAM's assembly for the first species: its lower, upper and
+    // diagonal do not depend on the field
+    tmp<fvScalarMatrix> top(fvmDiv(n0));
+    if (diffusion)
+    {
+        if (diffusionTimeIndex_ != mesh.time().timeIndex())
+        {
+            FatalErrorInFunction
+                << "correctDiffusion() was not called in this time step "
+                << "before correctOperator()" << abort(FatalError);
+        }
+        top.ref() -= implicitLaplacian_->fvmLaplacian(Df, n0);
+
+        // What gaussLaplacianScheme's boundary coefficients take
+        operatorGammaMagSf_.reset(new surfaceScalarField(Df*mesh.magSf()));
+        operatorDf_ = &Df;
+        operatorDeltaCoeffs_ =
+            fv::snGradScheme<scalar>::New
+            (
+                mesh,
+                IStringStream(implicitSnGrad_)()
+            )().deltaCoeffs(n0);
+    }
+
+    // Euler on a static mesh: ddt's diagonal, rDeltaT V, is every
+    // species' (its source, rDeltaT V n_old, is added per species);
+    // another ddt scheme is assembled per species
+    operatorEuler_ = !mesh.moving();
+    for (const volScalarField& n : mixture_.n())
+    {
+        ITstream& is = mesh.ddtScheme("ddt(" + n.name() + ')');
+        operatorEuler_ =
+            operatorEuler_
+         && is.size() == 1 && is[0].isWord() && is[0].wordToken() == "Euler";
+    }
+    if (operatorEuler_)
+    {
+        top.ref() += fvm::ddt(n0);
+    }
+
+    sharedOperator_.reset(top.ptr());
+    operatorTimeIndex_ = mesh.time().timeIndex();
+    return true;
+}
+
+
+Foam::tmp<Foam::fvScalarMatrix> Foam::speciesAdvection::sharedOperator
+(
+    const label k
+) const
+{
+    const fvMesh& mesh = mixture_.mesh();
+    const volScalarField& n = mixture_.n()[k];
+    if (operatorTimeIndex_ != mesh.time().timeIndex())
+    {
+        FatalErrorInFunction
+            << "correctOperator() did not assemble the shared operator in "
+            << "this time step before sharedOperator(" << n.name() << ")"
+            << abort(FatalError);
+    }
+
+    const fvScalarMatrix& shared = sharedOperator_();
+    tmp<fvScalarMatrix> tm(new fvScalarMatrix(n, shared.dimensions()));
+    fvScalarMatrix& m = tm.ref();
+    m.lduMatrix::operator=(shared);
+
+    if (operatorEuler_)
+    {
+        // The source of EulerDdtScheme::fvmDdt, its diagonal is shared
+        const scalar rDeltaT = 1.0/mesh.time().deltaTValue();
+        const scalarField& nOld = n.oldTime().primitiveField();
+        const scalarField& V = mesh.V().field();
+        scalarField& source = m.source();
+        forAll(source, celli)
+        {
+            source[celli] = rDeltaT*nOld[celli]*V[celli];
+        }
+    }
+
+    // The species' boundary coefficients, as gaussConvectionScheme::fvmDiv
+    // and gaussLaplacianScheme::fvmLaplacianUncorrected make them from its
+    // patch fields
+    const surfaceScalarField& phi = bulkFlow_.phi();
+    const surfaceScalarField& w = weights_();
+    const bool diffusion = operatorGammaMagSf_.valid();
+    forAll(n.boundaryField(), patchi)
+    {
+        const fvPatchScalarField& pn = n.boundaryField()[patchi];
+        const fvsPatchScalarField& pFlux = phi.boundaryField()[patchi];
+        const fvsPatchScalarField& pw = w.boundaryField()[patchi];
+        scalarField& internal = m.internalCoeffs()[patchi];
+        scalarField& boundary = m.boundaryCoeffs()[patchi];
+
+        internal = pFlux*pn.valueInternalCoeffs(pw);
+        boundary = -pFlux*pn.valueBoundaryCoeffs(pw);
+
+        if (!diffusion)
+        {
+            continue;
+        }
+        const fvsPatchScalarField& pGamma =
+            operatorGammaMagSf_().boundaryField()[patchi];
+        if (pn.coupled())
+        {
+            const fvsPatchScalarField& pDeltaCoeffs =
+                operatorDeltaCoeffs_().boundaryField()[patchi];
+            internal -= pGamma*pn.gradientInternalCoeffs(pDeltaCoeffs);
+            boundary -= -pGamma*pn.gradientBoundaryCoeffs(pDeltaCoeffs);
+        }
+        else
+        {
+            internal -= pGamma*pn.gradientInternalCoeffs();
+            boundary -= -pGamma*pn.gradientBoundaryCoeffs();
+        }
+    }
+
+    if (diffusion && k < diffusionGrad_.size())
+    {
+        // The species' non-orthogonal correction, explicit, as in
+        // fvmLaplacian
+        m.source() +=
+            mesh.V()
+           *fvc::div
+            (
+                operatorGammaMagSf_()
+               *linear<vector>(mesh).dotInterpolate
+                (
+                    mesh.nonOrthCorrectionVectors(),
+                    diffusionGrad_[k]
+                )
+            )().primitiveField();
+    }
+
+    if (!operatorEuler_)
+    {
+        m += fvm::ddt(n);
+    }
+
+    if (debug)
+    {
+        checkSharedOperator(k, m);
+    }
+    return tm;
+}
+
+
+void Foam::speciesAdvection::checkSharedOperator
+(
+    const label k,
+    const fvScalarMatrix& m
+) const
+{
+    // The species' own assembly, as the solver makes it where the
+    // operator is not shared
+    const volScalarField& n = mixture_.n()[k];
+    tmp<fvScalarMatrix> tOwn(fvm::ddt(n) + fvmDiv(n));
+    if (operatorGammaMagSf_.valid())
+    {
+        tOwn.ref() -= fvmLaplacian(k, *operatorDf_);
+    }
+    const fvScalarMatrix& own = tOwn();
+
+    // The largest difference of each part relative to the largest
+    // coefficient of that part (all processors)
+    const auto relDiff = [](const scalarField& a, const scalarField& b)
+    {
+        return gMax(mag(a - b)())/max(gMax(mag(b)()), VSMALL);
+    };
+    scalar matrixDiff = max
+    (
+        relDiff(m.diag(), own.diag()),
+        max(relDiff(m.upper(), own.upper()), relDiff(m.lower(), own.lower()))
+    );
+    scalar sourceDiff = relDiff(m.source(), own.source());
+    scalar boundaryDiff = 0;
+    scalar boundaryScale = VSMALL;
+    forAll(m.internalCoeffs(), patchi)
+    {
+        const scalarField& a = m.internalCoeffs()[patchi];
+        const scalarField& b = own.internalCoeffs()[patchi];
+        const scalarField& ab = m.boundaryCoeffs()[patchi];
+        const scalarField& bb = own.boundaryCoeffs()[patchi];
+        boundaryDiff = max(boundaryDiff, max(max(mag(a - b)), max(mag(ab - bb))));
+        boundaryScale = max(boundaryScale, max(max(mag(b)), max(mag(bb))));
+    }
+    reduce(boundaryDiff, maxOp<scalar>());
+    reduce(boundaryScale, maxOp<scalar>());
+    boundaryDiff /= boundaryScale;
+
+    Info<< "speciesAdvection: shared operator of " << n.name()
+        << " against its own assembly: relative difference "
+        << max(matrixDiff, boundaryDiff) << " (matrix " << matrixDiff
+        << ", boundary " << boundaryDiff << "), source " << sourceDiff
+        << endl;
+
+    if (max(max(matrixDiff, boundaryDiff), sourceDiff) > 1e-12)
+    {
+        FatalErrorInFunction
+            << "the shared operator of " << n.name() << " differs from its "
+            << "own assembly by more than 1e-12 relative: matrix "
+            << matrixDiff << ", boundary " << boundaryDiff << ", source "
+            << sourceDiff << abort(FatalError);
+    }
 }
 
 
