@@ -82,6 +82,12 @@ test_bad_input()
         laplacianLimited)
             foamDictionary -entry "laplacianSchemes/laplacian(D,n)" -set "Gauss linear limited corrected 0.33" "$dir/system/fvSchemes" > /dev/null
             expect=("laplacian(D,n)" "limited" "Valid snGrad schemes: corrected, uncorrected") ;;
+        gradNotLinear)
+            foamDictionary -entry "gradSchemes/default" -set "fourth" "$dir/system/fvSchemes" > /dev/null
+            expect=("gradSchemes" "grad(n.fine)" "fourth" "linear in the field" "pointCellsLeastSquares") ;;
+        gradMismatch)
+            foamDictionary -entry "gradSchemes/grad(n.coarse)" -set "leastSquares" "$dir/system/fvSchemes" > /dev/null
+            expect=("gradSchemes" "grad(n.coarse)" "leastSquares" "Gauss linear" "the same gradient") ;;
         *) echo "unknown kind $kind"; return 1 ;;
     esac
 

@@ -363,28 +363,96 @@ Foam::word Foam::speciesAdvection::laplacianSnGrad() const
 }
 
 
-bool Foam::speciesAdvection::gradientsLimited() const
+bool Foam::speciesAdvection::selectDiffusionGradients()
 {
-    // Anything but plain Gauss linear for a species or for the total
+    // gradSchemes of every species and of their total: one unlimited
+    // scheme that is linear in the field (the species' corrections then
+    // sum to the total's), optionally behind a limiter
     const fvMesh& mesh = mixture_.mesh();
-    const auto limited = [&](const volScalarField& field)
+    static const wordHashSet limiters
+    ({
+        "cellLimited", "cellMDLimited", "faceLimited", "faceMDLimited"
+    });
+    static const wordList linearSchemes
+    ({
+        "Gauss linear", "leastSquares", "pointCellsLeastSquares"
+    });
+
+    string base;
+    bool limited = false;
+    word baseField;
+    const auto parse = [&](const volScalarField& field)
     {
-        ITstream& is = mesh.gradScheme("grad(" + field.name() + ')');
-        return
-            !(
-                is.size() == 2
-             && is[0].isWord() && is[0].wordToken() == "Gauss"
-             && is[1].isWord() && is[1].wordToken() == "linear"
+        const word entry("grad(" + field.name() + ')');
+        ITstream& is = mesh.gradScheme(entry);
+        OStringStream all;
+        forAll(is, tokeni)
+        {
+            all << (tokeni ? " " : "") << is[tokeni];
+        }
+        const bool isLimited =
+            is.size() > 2 && is[0].isWord()
+         && (
+                limiters.found(is[0].wordToken())
+             || is[0].wordToken().starts_with("cellLimited<")
             );
+        OStringStream unlimited;
+        for
+        (
+            label tokeni = isLimited ? 1 : 0;
+            tokeni < (isLimited ? is.size() - 1 : is.size());
+            ++tokeni
+        )
+        {
+            unlimited << (tokeni > (isLimited ? 1 : 0) ? " " : "")
+                << is[tokeni];
+        }
+        const string fieldBase(unlimited.str());
+        if (!linearSchemes.found(word(fieldBase, false)))
+        {
+            FatalIOErrorInFunction(mesh.schemesDict())
+                << "gradSchemes: '" << entry << "' is '"
+                << all.str().c_str() << "'; the species' diffusion takes its "
+                << "non-orthogonal correction from this gradient, which must "
+                << "be linear in the field (so that the species' corrections "
+                << "sum to the total's): Gauss linear, leastSquares or "
+                << "pointCellsLeastSquares, optionally limited (cellLimited, cellMDLimited, "
+                << "faceLimited, faceMDLimited)" << nl << exit(FatalIOError);
+        }
+        if (baseField.empty())
+        {
+            base = fieldBase;
+            baseField = entry;
+        }
+        else if (fieldBase != base)
+        {
+            FatalIOErrorInFunction(mesh.schemesDict())
+                << "gradSchemes: '" << entry << "' uses " << fieldBase
+                << " and '" << baseField << "' " << base << "; the species "
+                << "and their total need the same gradient (limited or not) "
+                << "so that their diffusion corrections sum to the total's"
+                << nl << exit(FatalIOError);
+        }
+        limited = limited || isLimited;
     };
     for (const volScalarField& n : mixture_.n())
     {
-        if (limited(n))
-        {
-            return true;
-        }
+        parse(n);
     }
-    return limited(mixture_.nTotal());
+    parse(mixture_.nTotal());
+
+    if (base != diffusionGradScheme_)
+    {
+        linearGrad_ = fv::gradScheme<scalar>::New(mesh, IStringStream(base)());
+        limitedGrad_ =
+            fv::gradScheme<scalar>::New
+            (
+                mesh,
+                IStringStream("cellLimited " + base + " 1")()
+            );
+        diffusionGradScheme_ = base;
+    }
+    return limited;
 }
 
 
@@ -496,22 +564,6 @@ Foam::speciesAdvection::speciesAdvection
 :
     mixture_(mixture),
     bulkFlow_(bulkFlow),
-    linearGrad_
-    (
-        fv::gradScheme<scalar>::New
-        (
-            mixture.mesh(),
-            IStringStream("Gauss linear")()
-        )
-    ),
-    limitedGrad_
-    (
-        fv::gradScheme<scalar>::New
-        (
-            mixture.mesh(),
-            IStringStream("cellLimited Gauss linear 1")()
-        )
-    ),
     nonOrthogonal_
     (
         gMax(mag(mixture.mesh().nonOrthCorrectionVectors())().primitiveField())
@@ -719,20 +771,28 @@ void Foam::speciesAdvection::correctDiffusion()
     }
 
     diffusionGrad_.clear();
-    if (snGrad != "corrected" || !nonOrthogonal_)
+    if (snGrad != "corrected")
+    {
+        return;
+    }
+    // Checked on every mesh, so that a case's schemes are refused or
+    // accepted whatever its mesh
+    const bool limit = selectDiffusionGradients();
+    if (!nonOrthogonal_)
     {
         return;
     }
 
-    // Gradients Gauss linear (gradSchemes for the species and the total):
+    // Unlimited gradients (gradSchemes for the species and the total):
     // the correction is OpenFOAM's corrected one. Limited gradients: the
     // limiter of each field is |cell-limited gradient|/|gradient| of the
-    // same Gauss linear gradient (cellLimited scales it by one factor per
+    // same unlimited gradient (cellLimited scales it by one factor per
     // cell); the smallest over the species and their total is shared,
     // each field counting only in the cells where it varies across some
-    // face (variesAcross)
+    // face (variesAcross). On skewed cells Gauss linear is not consistent
+    // (its face values are not at the face centres) and leastSquares is
+    // exact for linear fields: the correction is then second order
     const PtrList<volScalarField>& n = mixture_.n();
-    const bool limit = gradientsLimited();
     scalarField limiter(mesh.nCells(), scalar(1));
 
     const auto limitBy = [&](const volScalarField& field)
