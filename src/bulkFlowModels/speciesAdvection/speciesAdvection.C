@@ -840,6 +840,27 @@ void Foam::speciesAdvection::correctDiffusion()
 }
 
 
+Foam::tmp<Foam::scalarField> Foam::speciesAdvection::nonOrthogonalCorrection
+(
+    const label k,
+    const surfaceScalarField& gammaMagSf
+) const
+{
+    const fvMesh& mesh = mixture_.mesh();
+    return
+        mesh.V()
+       *fvc::div
+        (
+            gammaMagSf
+           *linear<vector>(mesh).dotInterpolate
+            (
+                mesh.nonOrthCorrectionVectors(),
+                diffusionGrad_[k]
+            )
+        )().primitiveField();
+}
+
+
 Foam::tmp<Foam::fvScalarMatrix> Foam::speciesAdvection::fvmLaplacian
 (
     const label k,
@@ -862,18 +883,8 @@ Foam::tmp<Foam::fvScalarMatrix> Foam::speciesAdvection::fvmLaplacian
     if (k < diffusionGrad_.size())
     {
         // The non-orthogonal correction, explicit, from the species'
-        // Gauss linear gradient (with the shared limiter)
-        tnEqn.ref().source() -=
-            mesh.V()
-           *fvc::div
-            (
-                Df*mesh.magSf()
-               *linear<vector>(mesh).dotInterpolate
-                (
-                    mesh.nonOrthCorrectionVectors(),
-                    diffusionGrad_[k]
-                )
-            )().primitiveField();
+        // gradient (with the shared limiter)
+        tnEqn.ref().source() -= nonOrthogonalCorrection(k, Df*mesh.magSf());
     }
     return tnEqn;
 }
@@ -1021,17 +1032,7 @@ Foam::tmp<Foam::fvScalarMatrix> Foam::speciesAdvection::sharedOperator
     {
         // The species' non-orthogonal correction, explicit, as in
         // fvmLaplacian
-        m.source() +=
-            mesh.V()
-           *fvc::div
-            (
-                operatorGammaMagSf_()
-               *linear<vector>(mesh).dotInterpolate
-                (
-                    mesh.nonOrthCorrectionVectors(),
-                    diffusionGrad_[k]
-                )
-            )().primitiveField();
+        m.source() += nonOrthogonalCorrection(k, operatorGammaMagSf_());
     }
 
     if (!operatorEuler_)
