@@ -915,8 +915,9 @@ PY
 # (validation/unstructuredMeshes/study): observed order of the finest pair
 # at least 1.5 in L1 and 1 in the max norm, every species within [0, the
 # total] (1e-8) and its volume kept (1e-10) on every mesh. Measured: L1
-# 2.00-2.38, max 1.26-2.12; with Gauss linear the column's error does not
-# converge on the distorted and polyhedral meshes (docs/validation.md)
+# 2.00-2.38, max 1.26-2.12, volumes to 4.8e-11; with Gauss linear the
+# column's error does not converge on the distorted and polyhedral meshes
+# (docs/validation.md)
 test_unstructured_meshes()
 {
     local dir="$workRoot/unstructuredMeshes"

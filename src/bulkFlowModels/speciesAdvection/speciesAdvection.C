@@ -23,6 +23,8 @@
 #include "IStringStream.H"
 #include "OStringStream.H"
 
+#include <algorithm>
+
 namespace Foam
 {
     defineTypeNameAndDebug(sharedWeights, 0);
@@ -43,9 +45,9 @@ const Foam::scalar Foam::speciesAdvection::bulkCellAlpha_ = 0.5;
 
 // The correction vectors of a blockMesh box are round-off (3.1e-13 on a
 // 400 x 400 unit square, growing with the cells across it), not a
-// correction worth a gradient per species per step: |k| is the sine of the
-// face's non-orthogonality, and 1e-10 rad changes a face's diffusion flux
-// by at most 1e-10 of itself, the species' solver tolerance
+// correction worth a gradient per species per step: |k| is the tangent of
+// the face's non-orthogonality, and below 1e-10 the correction is below
+// 1e-10 of Df |Sf| |grad n| on every face
 const Foam::scalar Foam::speciesAdvection::nonOrthogonalTolerance_ = 1e-10;
 const Foam::scalar Foam::speciesAdvection::undershootTolerance_ = 1e-10;
 
@@ -108,8 +110,12 @@ void Foam::speciesAdvection::correctWeights
             << " scheme (vanLeer01, limitedLinear01, vanLeer, ...)" << nl
             << exit(FatalIOError);
     }
-    if (!gauss)
+    if (!gauss || gauss->interpScheme().corrected())
     {
+        // OpenFOAM's path, each species with its own explicit correction
+        // (linearUpwind, LUST: their upwind part is a limited scheme whose
+        // limiter is 0, so the shared limiter below would drop the
+        // correction)
         return;
     }
 
@@ -123,19 +129,15 @@ void Foam::speciesAdvection::correctWeights
     {
         // Field-independent weights (or one species' own limited ones):
         // OpenFOAM's, kept for the operator the species share and for the
-        // bulk fraction's interpolation. An explicit correction (e.g.
-        // linearUpwind) is the species' own: OpenFOAM's path
-        if (!gauss->interpScheme().corrected())
-        {
-            weights_.reset
+        // bulk fraction's interpolation
+        weights_.reset
+        (
+            new surfaceScalarField
             (
-                new surfaceScalarField
-                (
-                    "speciesAdvectionWeights",
-                    gauss->interpScheme().weights(n[0])
-                )
-            );
-        }
+                "speciesAdvectionWeights",
+                gauss->interpScheme().weights(n[0])
+            )
+        );
         return;
     }
 
@@ -373,12 +375,12 @@ bool Foam::speciesAdvection::selectDiffusionGradients()
     ({
         "cellLimited", "cellMDLimited", "faceLimited", "faceMDLimited"
     });
-    static const wordList linearSchemes
-    ({
+    static const std::string linearSchemes[] =
+    {
         "Gauss linear", "leastSquares", "pointCellsLeastSquares"
-    });
+    };
 
-    string base;
+    std::string base;
     bool limited = false;
     word baseField;
     const auto parse = [&](const volScalarField& field)
@@ -392,10 +394,7 @@ bool Foam::speciesAdvection::selectDiffusionGradients()
         }
         const bool isLimited =
             is.size() > 2 && is[0].isWord()
-         && (
-                limiters.found(is[0].wordToken())
-             || is[0].wordToken().starts_with("cellLimited<")
-            );
+         && limiters.found(is[0].wordToken());
         OStringStream unlimited;
         for
         (
@@ -407,8 +406,14 @@ bool Foam::speciesAdvection::selectDiffusionGradients()
             unlimited << (tokeni > (isLimited ? 1 : 0) ? " " : "")
                 << is[tokeni];
         }
-        const string fieldBase(unlimited.str());
-        if (!linearSchemes.found(word(fieldBase, false)))
+        const std::string fieldBase(unlimited.str());
+        if
+        (
+            std::find
+            (
+                std::begin(linearSchemes), std::end(linearSchemes), fieldBase
+            ) == std::end(linearSchemes)
+        )
         {
             FatalIOErrorInFunction(mesh.schemesDict())
                 << "gradSchemes: '" << entry << "' is '"
@@ -416,8 +421,11 @@ bool Foam::speciesAdvection::selectDiffusionGradients()
                 << "non-orthogonal correction from this gradient, which must "
                 << "be linear in the field (so that the species' corrections "
                 << "sum to the total's): Gauss linear, leastSquares or "
-                << "pointCellsLeastSquares, optionally limited (cellLimited, cellMDLimited, "
-                << "faceLimited, faceMDLimited)" << nl << exit(FatalIOError);
+                << "pointCellsLeastSquares, optionally limited (cellLimited, "
+                << "cellMDLimited, faceLimited or faceMDLimited <scheme> "
+                << "<coefficient>; the correction then takes one limiter "
+                << "shared by the species, cellLimited <scheme> 1)" << nl
+                << exit(FatalIOError);
         }
         if (baseField.empty())
         {
@@ -427,8 +435,8 @@ bool Foam::speciesAdvection::selectDiffusionGradients()
         else if (fieldBase != base)
         {
             FatalIOErrorInFunction(mesh.schemesDict())
-                << "gradSchemes: '" << entry << "' uses " << fieldBase
-                << " and '" << baseField << "' " << base << "; the species "
+                << "gradSchemes: '" << entry << "' uses " << fieldBase.c_str()
+                << " and '" << baseField << "' " << base.c_str() << "; the species "
                 << "and their total need the same gradient (limited or not) "
                 << "so that their diffusion corrections sum to the total's"
                 << nl << exit(FatalIOError);
@@ -893,7 +901,8 @@ Foam::tmp<Foam::fvScalarMatrix> Foam::speciesAdvection::fvmLaplacian
 bool Foam::speciesAdvection::correctOperator
 (
     const surfaceScalarField& Df,
-    const bool diffusion
+    const bool diffusion,
+    const label firstSpecies
 )
 {
     operatorTimeIndex_ = -1;
@@ -910,10 +919,12 @@ bool Foam::speciesAdvection::correctOperator
     }
 
     const fvMesh& mesh = mixture_.mesh();
-    const volScalarField& n0 = mixture_.n()[0];
+    const volScalarField& n0 = mixture_.n()[firstSpecies];
 
-    // OpenFOAM's assembly for the first species: its lower, upper and
-    // diagonal do not depend on the field
+    // OpenFOAM's assembly for the species solved first (its boundary
+    // conditions are updated here, just before its solve, as they would be
+    // by its own assembly): its lower, upper and diagonal do not depend on
+    // the field
     tmp<fvScalarMatrix> top(fvmDiv(n0));
     if (diffusion)
     {
@@ -1035,14 +1046,18 @@ Foam::tmp<Foam::fvScalarMatrix> Foam::speciesAdvection::sharedOperator
         m.source() += nonOrthogonalCorrection(k, operatorGammaMagSf_());
     }
 
+    // Another ddt scheme, assembled for the species (once: Crank-Nicolson
+    // updates its stored ddt0 at its first evaluation in a step)
+    tmp<fvScalarMatrix> tddt;
     if (!operatorEuler_)
     {
-        m += fvm::ddt(n);
+        tddt = fvm::ddt(n);
+        m += tddt();
     }
 
     if (debug)
     {
-        checkSharedOperator(k, m);
+        checkSharedOperator(k, m, tddt.valid() ? tddt() : fvm::ddt(n)());
     }
     return tm;
 }
@@ -1051,13 +1066,16 @@ Foam::tmp<Foam::fvScalarMatrix> Foam::speciesAdvection::sharedOperator
 void Foam::speciesAdvection::checkSharedOperator
 (
     const label k,
-    const fvScalarMatrix& m
+    const fvScalarMatrix& m,
+    const fvScalarMatrix& ddt
 ) const
 {
     // The species' own assembly, as the solver makes it where the
-    // operator is not shared
+    // operator is not shared (with the time derivative it was given: a
+    // second evaluation of Crank-Nicolson's in the step would differ)
     const volScalarField& n = mixture_.n()[k];
-    tmp<fvScalarMatrix> tOwn(fvm::ddt(n) + fvmDiv(n));
+    tmp<fvScalarMatrix> tOwn(new fvScalarMatrix(ddt));
+    tOwn.ref() += fvmDiv(n);
     if (operatorGammaMagSf_.valid())
     {
         tOwn.ref() -= fvmLaplacian(k, *operatorDf_);
@@ -1076,20 +1094,34 @@ void Foam::speciesAdvection::checkSharedOperator
         max(relDiff(m.upper(), own.upper()), relDiff(m.lower(), own.lower()))
     );
     scalar sourceDiff = relDiff(m.source(), own.source());
+    // Each patch's coefficients relative to that patch's largest on this
+    // processor (a patch with small coefficients is not hidden behind a
+    // large one; no reduction per patch: processors differ in patches)
+    const auto localRelDiff = [](const scalarField& a, const scalarField& b)
+    {
+        return
+            a.empty() ? scalar(0) : max(mag(a - b))/max(max(mag(b)), VSMALL);
+    };
     scalar boundaryDiff = 0;
-    scalar boundaryScale = VSMALL;
     forAll(m.internalCoeffs(), patchi)
     {
-        const scalarField& a = m.internalCoeffs()[patchi];
-        const scalarField& b = own.internalCoeffs()[patchi];
-        const scalarField& ab = m.boundaryCoeffs()[patchi];
-        const scalarField& bb = own.boundaryCoeffs()[patchi];
-        boundaryDiff = max(boundaryDiff, max(max(mag(a - b)), max(mag(ab - bb))));
-        boundaryScale = max(boundaryScale, max(max(mag(b)), max(mag(bb))));
+        boundaryDiff = max
+        (
+            boundaryDiff,
+            max
+            (
+                localRelDiff
+                (
+                    m.internalCoeffs()[patchi], own.internalCoeffs()[patchi]
+                ),
+                localRelDiff
+                (
+                    m.boundaryCoeffs()[patchi], own.boundaryCoeffs()[patchi]
+                )
+            )
+        );
     }
     reduce(boundaryDiff, maxOp<scalar>());
-    reduce(boundaryScale, maxOp<scalar>());
-    boundaryDiff /= boundaryScale;
 
     Info<< "speciesAdvection: shared operator of " << n.name()
         << " against its own assembly: relative difference "
