@@ -4,7 +4,7 @@ if (!exists("datafile")) datafile = 'results.txt'
 if (!exists("output")) output = 'solverSpeedAccuracy.png'
 set terminal pngcairo size 900,550 font ",10"
 set output output
-set title "silo2D, outlet coarse fraction over 15 s: error against the reference vs solver CPU time"
+set title "silo2D, outlet coarse fraction: error against the reference vs solver CPU time"
 set logscale xy
 set xlabel "solver CPU time [s]"
 set ylabel "max_t |M - M_{ref}|"
@@ -15,4 +15,4 @@ plot datafile using ($1==1 && strcol(4) eq "upwind" ? $5 : 1/0):8 with linespoin
      datafile using ($1==1 && strcol(4) eq "vanLeer01" ? $5 : 1/0):8 with linespoints pt 9 lc 3 title "vanLeer01, refine 1", \
      datafile using ($1==2 && strcol(4) eq "upwind" ? $5 : 1/0):8 with points pt 6 ps 2 lc 1 title "upwind, refine 2", \
      datafile using ($1==2 && strcol(4) eq "limitedLinear01" ? $5 : 1/0):8 with points pt 4 ps 2 lc 2 title "limitedLinear01, refine 2", \
-     datafile using ($1==2 && strcol(4) eq "vanLeer01" ? $5 : 1/0):8 with points pt 8 ps 2 lc 3 title "vanLeer01, refine 2 (Co 0.5, 0.25)"
+     datafile using ($1==2 && strcol(4) eq "vanLeer01" ? $5 : 1/0):8 with points pt 8 ps 2 lc 3 title "vanLeer01, refine 2"
