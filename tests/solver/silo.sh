@@ -123,12 +123,13 @@ test_kinematic_unread_entry()
 }
 
 # kinematic's optional entries out of range: a negative surfaceLayer, a
-# packedFraction above 1, an unknown geometry; each a FatalIOError naming
+# packedFraction above 1, an unknown geometry, a misspelt marchingScheme;
+# each a FatalIOError naming
 # the entry (and the valid kinds), nothing written
 test_kinematic_bad_input()
 {
     local dir="$workRoot/kinematicBadInput" entry value expect
-    for entry in "surfaceLayer:-0.1:'surfaceLayer -0.1' must be > 0" "packedFraction:1.5:'packedFraction 1.5' must lie in (0, 1]" "geometry:cone:Unknown geometry 'cone'; valid: "
+    for entry in "surfaceLayer:-0.1:'surfaceLayer -0.1' must be > 0" "packedFraction:1.5:'packedFraction 1.5' must lie in (0, 1]" "geometry:cone:Unknown geometry 'cone'; valid: " "marchingScheme:\"Gauss upwnd\":marchingScheme \"Gauss upwnd\": expected"
     do
         local key="${entry%%:*}" rest="${entry#*:}"
         value="${rest%%:*}"; expect="${rest#*:}"
