@@ -26,7 +26,7 @@ test_silo3D_tutorial()
     # and 1e-10 (pKinematic) each step. The species' shared TVD limiter
     # includes the total's where the total varies by more than 1e-8: that
     # switch turns the ranks' different round-off into different weights
-    # on faces where the composition varies, and over 550 steps the fields
+    # on faces where the composition varies, and over 153 steps (550 at maxCo 0.5) the fields
     # differ by 5.9e-6 (measured at maxCo 2; 4.2e-6 at 0.5; 3e-8 with the species' limiters alone,
     # which let the total rise 1e-4 above packing), so 1e-5 (on n up to 0.6)
     python3 -m sdfoam.fieldStats "$parallel" compare "$serial" --tol 1e-5
