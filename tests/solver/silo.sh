@@ -238,7 +238,7 @@ PY
 # non-orthogonal correction (29 deg there) and the limited face values of the
 # explicit sieving flux are needed for it: with either uncorrected/upwind
 # the fields stay within 1e-17; a limited correction is refused by design
-# (the species share one diffusion operator). Left open: docs/validation.md
+# (the species share one diffusion operator); docs/validation.md
 test_kinematic_free_surface()
 {
     local dir="$workRoot/kinematicFreeSurface"

@@ -14,8 +14,9 @@
 #include "fvc.H"
 #include "convectionScheme.H"
 #include "laplacianScheme.H"
-#include "surfaceInterpolationScheme.H"
+#include <sstream>
 #include "IStringStream.H"
+#include "OStringStream.H"
 #include "zeroGradientFvPatchFields.H"
 #include "fixedValueFvPatchFields.H"
 #include "mathematicalConstants.H"
@@ -321,6 +322,42 @@ void Foam::bulkFlowModels::kinematic::readDischargeRate()
 }
 
 
+Foam::string Foam::bulkFlowModels::kinematic::readMarchingScheme
+(
+    const dictionary& coeffs
+)
+{
+    if (!coeffs.found("marchingScheme"))
+    {
+        return "Gauss linearUpwind grad(vKinematic)";
+    }
+    // As fvSchemes writes it (words) or quoted as one string
+    ITstream& is = coeffs.lookup("marchingScheme");
+    OStringStream os;
+    for (label i = 0; i < is.size(); ++i)
+    {
+        const token& tok = is[i];
+        if (i)
+        {
+            os << ' ';
+        }
+        if (tok.isWord())
+        {
+            os << tok.wordToken().c_str();
+        }
+        else if (tok.isString())
+        {
+            os << tok.stringToken().c_str();
+        }
+        else
+        {
+            os << tok;
+        }
+    }
+    return os.str();
+}
+
+
 void Foam::bulkFlowModels::kinematic::solveNeddermanTuzun()
 {
     const fvMesh& mesh = mixture_.mesh();
@@ -393,11 +430,14 @@ void Foam::bulkFlowModels::kinematic::solveNeddermanTuzun()
     );
 
     const dictionary controls(solverControls(mesh, "vKinematic", false));
-    const scalar tolerance = controls.getOrDefault<scalar>("tolerance", 1e-12);
+    // lduMatrix::solver's own default where the entry is absent
+    const scalar tolerance = controls.getOrDefault<scalar>("tolerance", 1e-6);
     // Three solves at least (non-orthogonal correction), then until the
-    // explicit corrections are converged: the first solve of an iteration
-    // starts at the solver's tolerance
+    // explicit part has settled: a solve that starts at the tolerance (or
+    // 1e-11 of the first solve's residual) or has nothing left to do. Each
+    // solve from the third on must converge, or the run stops at once
     const label maxCorr = 100;
+    scalar firstResidual = -1;
     for (label corr = 0; ; ++corr)
     {
         fvScalarMatrix vEqn
@@ -406,23 +446,37 @@ void Foam::bulkFlowModels::kinematic::solveNeddermanTuzun()
           - lapScheme->fvmLaplacian(Bh, v)
         );
         const solverPerformance perf = vEqn.solve(controls);
-        const bool converged =
-            perf.converged() && perf.initialResidual() <= 10*tolerance;
-        if (corr >= 2 && converged)
+        if (corr == 0)
+        {
+            firstResidual = perf.initialResidual();
+        }
+        if (corr >= 2 && !perf.converged())
+        {
+            FatalErrorInFunction
+                << "The kinematic equation (vKinematic) did not converge:"
+                << " final residual " << perf.finalResidual() << " after "
+                << perf.nIterations() << " iterations (solver "
+                << controls.get<word>("solver") << " in system/fvSolution"
+                << " or the default). Check that constant/g points down"
+                << " the silo to the outlet patches" << nl
+                << exit(FatalError);
+        }
+        const bool settled =
+            perf.nIterations() == 0
+         || perf.initialResidual() <= max(10*tolerance, 1e-11*firstResidual);
+        if (corr >= 2 && settled)
         {
             break;
         }
         if (corr == maxCorr)
         {
             FatalErrorInFunction
-                << "The kinematic equation (vKinematic) did not converge in "
-                << maxCorr + 1 << " corrections: initial residual "
-                << perf.initialResidual() << ", final "
-                << perf.finalResidual() << " after " << perf.nIterations()
-                << " iterations (solver " << controls.get<word>("solver")
-                << " in system/fvSolution or the default; marchingScheme "
-                << marchingScheme_ << "). Check that constant/g points down"
-                << " the silo to the outlet patches" << nl
+                << "The explicit part of marchingScheme " << marchingScheme_
+                << " did not settle in " << maxCorr + 1 << " solves of the"
+                << " kinematic equation (vKinematic): initial residual "
+                << perf.initialResidual() << ", first "
+                << firstResidual << ". Use \"Gauss upwind\" or a linear"
+                << " gradient for grad(vKinematic) in gradSchemes" << nl
                 << exit(FatalError);
         }
     }
@@ -676,14 +730,7 @@ Foam::bulkFlowModels::kinematic::kinematic
     B_(modelCoeffs::get(coeffs_, "B", dimLength).value()),
     outletPatches_(),
     geometry_(),
-    marchingScheme_
-    (
-        coeffs_.getOrDefault<string>
-        (
-            "marchingScheme",
-            "Gauss linearUpwind grad(vKinematic)"
-        )
-    ),
+    marchingScheme_(readMarchingScheme(coeffs_)),
     Q_(0),
     Qmesh_(0),
     packedFraction_(0),
@@ -712,20 +759,61 @@ Foam::bulkFlowModels::kinematic::kinematic
     }
 
     {
-        // "Gauss <interpolation scheme> [its arguments]": checked here, so
-        // that a mistake is reported against this entry, not a bare stream
-        IStringStream is(marchingScheme_);
-        const word gauss(is);
-        const word interp(is.eof() ? word::null : word(is));
-        const auto& flux =
-            *surfaceInterpolationScheme<scalar>::MeshFluxConstructorTablePtr_;
-        if (gauss != "Gauss" || !flux.found(interp))
+        // "Gauss upwind" or "Gauss linearUpwind <gradient>": checked here,
+        // so that a mistake is reported against this entry. The marching
+        // direction needs an upwind-biased scheme: a central one (linear,
+        // the limited schemes on smooth fields) takes the matrix's
+        // diagonal dominance and the Gauss-Seidel solve diverges
+        std::istringstream words(marchingScheme_);
+        std::string gauss, interp;
+        words >> gauss >> interp;
+        if (gauss != "Gauss" || (interp != "upwind" && interp != "linearUpwind"))
         {
             FatalIOErrorInFunction(coeffs_)
                 << "marchingScheme " << marchingScheme_ << ": expected"
-                << " \"Gauss <scheme> [arguments]\", <scheme> one of "
-                << flatOutput(flux.sortedToc()) << " (e.g. \"Gauss linearUpwind"
-                << " grad(vKinematic)\", the default, or \"Gauss upwind\")"
+                << " \"Gauss upwind\" (first order) or \"Gauss linearUpwind"
+                << " <gradient>\" (second order; the default, with"
+                << " grad(vKinematic) from gradSchemes)"
+                << nl << exit(FatalIOError);
+        }
+    }
+
+    {
+        // The rest of the entry (the scheme's own arguments, e.g.
+        // linearUpwind's gradient name): built once here so that a mistake
+        // is reported against marchingScheme, not a bare stream
+        const surfaceScalarField noFlux
+        (
+            IOobject
+            (
+                "phiMarchingCheck",
+                mesh.time().timeName(),
+                mesh,
+                IOobject::NO_READ,
+                IOobject::NO_WRITE,
+                false
+            ),
+            mesh,
+            dimensionedScalar(dimVolume/dimTime, Zero)
+        );
+        const bool ioThrowing = FatalIOError.throwExceptions();
+        const bool throwing = FatalError.throwExceptions();
+        string problem;
+        try
+        {
+            IStringStream is(marchingScheme_);
+            fv::convectionScheme<scalar>::New(mesh, noFlux, is);
+        }
+        catch (const Foam::error& err)
+        {
+            problem = err.message();
+        }
+        FatalIOError.throwExceptions(ioThrowing);
+        FatalError.throwExceptions(throwing);
+        if (!problem.empty())
+        {
+            FatalIOErrorInFunction(coeffs_)
+                << "marchingScheme " << marchingScheme_ << ": " << problem
                 << nl << exit(FatalIOError);
         }
     }
