@@ -407,10 +407,11 @@ void Foam::bulkFlowModels::kinematic::solveNeddermanTuzun()
     );
 
     // The marching direction's derivative: a convection scheme along
-    // phiUp. Upwind is first order in the cell height, and so was every
-    // result downstream of the flow (silo2D's outlet composition converged
-    // at order 1.0 in the mesh); linearUpwind is its second-order form.
-    // Its explicit part is iterated to convergence (deferred correction)
+    // phiUp. Upwind is first order in the cell height, and so is every
+    // result downstream of the flow (silo2D's outlet composition converges
+    // at order 1.0 in the mesh with it); linearUpwind is its second-order
+    // form. Its explicit part is iterated to convergence (deferred
+    // correction)
     tmp<fv::convectionScheme<scalar>> marchScheme
     (
         fv::convectionScheme<scalar>::New
