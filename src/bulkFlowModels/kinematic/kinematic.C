@@ -411,16 +411,35 @@ void Foam::bulkFlowModels::kinematic::solveNeddermanTuzun()
     // result downstream of the flow (silo2D's outlet composition converges
     // at order 1.0 in the mesh with it); linearUpwind is its second-order
     // form. Its explicit part is iterated to convergence (deferred
-    // correction)
-    tmp<fv::convectionScheme<scalar>> marchScheme
-    (
-        fv::convectionScheme<scalar>::New
-        (
-            mesh,
-            phiUp,
-            IStringStream(marchingScheme_)()
-        )
-    );
+    // correction). Its arguments (linearUpwind's gradient name) are read
+    // here: a mistake is reported against marchingScheme, not a bare stream
+    tmp<fv::convectionScheme<scalar>> marchScheme;
+    {
+        const bool ioThrowing = FatalIOError.throwExceptions();
+        const bool throwing = FatalError.throwExceptions();
+        string problem;
+        try
+        {
+            marchScheme = fv::convectionScheme<scalar>::New
+            (
+                mesh,
+                phiUp,
+                IStringStream(marchingScheme_)()
+            );
+        }
+        catch (const Foam::error& err)
+        {
+            problem = err.message();
+        }
+        FatalIOError.throwExceptions(ioThrowing);
+        FatalError.throwExceptions(throwing);
+        if (!problem.empty())
+        {
+            FatalIOErrorInFunction(coeffs_)
+                << "marchingScheme " << marchingScheme_ << ": " << problem
+                << nl << exit(FatalIOError);
+        }
+    }
     tmp<fv::laplacianScheme<scalar, tensor>> lapScheme
     (
         fv::laplacianScheme<scalar, tensor>::New
@@ -775,46 +794,6 @@ Foam::bulkFlowModels::kinematic::kinematic
                 << " \"Gauss upwind\" (first order) or \"Gauss linearUpwind"
                 << " <gradient>\" (second order; the default, with"
                 << " grad(vKinematic) from gradSchemes)"
-                << nl << exit(FatalIOError);
-        }
-    }
-
-    {
-        // The rest of the entry (the scheme's own arguments, e.g.
-        // linearUpwind's gradient name): built once here so that a mistake
-        // is reported against marchingScheme, not a bare stream
-        const surfaceScalarField noFlux
-        (
-            IOobject
-            (
-                "phiMarchingCheck",
-                mesh.time().timeName(),
-                mesh,
-                IOobject::NO_READ,
-                IOobject::NO_WRITE,
-                false
-            ),
-            mesh,
-            dimensionedScalar(dimVolume/dimTime, Zero)
-        );
-        const bool ioThrowing = FatalIOError.throwExceptions();
-        const bool throwing = FatalError.throwExceptions();
-        string problem;
-        try
-        {
-            IStringStream is(marchingScheme_);
-            fv::convectionScheme<scalar>::New(mesh, noFlux, is);
-        }
-        catch (const Foam::error& err)
-        {
-            problem = err.message();
-        }
-        FatalIOError.throwExceptions(ioThrowing);
-        FatalError.throwExceptions(throwing);
-        if (!problem.empty())
-        {
-            FatalIOErrorInFunction(coeffs_)
-                << "marchingScheme " << marchingScheme_ << ": " << problem
                 << nl << exit(FatalIOError);
         }
     }
