@@ -209,22 +209,26 @@ Foam::granularMixture::granularMixture(const fvMesh& mesh)
     n_.setSize(names_.size());
     forAll(names_, i)
     {
-        n_.set
+        IOobject io
         (
-            i,
-            new volScalarField
-            (
-                IOobject
-                (
-                    "n." + names_[i],
-                    mesh.time().timeName(),
-                    mesh,
-                    IOobject::MUST_READ,
-                    IOobject::AUTO_WRITE
-                ),
-                mesh
-            )
+            "n." + names_[i],
+            mesh.time().timeName(),
+            mesh,
+            IOobject::MUST_READ,
+            IOobject::AUTO_WRITE
         );
+        // A species without its field: say which species and where it is
+        // declared (OpenFOAM's own error names only the file it looked for)
+        if (!io.typeHeaderOk<volScalarField>(false))
+        {
+            FatalIOErrorInFunction(*this)
+                << "Missing field " << io.name() << " of species '"
+                << names_[i] << "' (declared in 'species' of " << objectPath()
+                << "): every species needs its volume fraction field "
+                << io.name() << " in the start time directory "
+                << mesh.time().timeName() << nl << exit(FatalIOError);
+        }
+        n_.set(i, new volScalarField(io, mesh));
         if (n_[i].dimensions() != dimless)
         {
             FatalErrorInFunction

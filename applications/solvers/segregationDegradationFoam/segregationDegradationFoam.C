@@ -40,6 +40,8 @@ Description
 #include "segregationFlux.H"
 #include "speciesAdvection.H"
 #include "wallFvPatch.H"
+#include "polyMeshTools.H"
+#include "unitConversion.H"
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 
@@ -59,6 +61,7 @@ int main(int argc, char *argv[])
     #include "createMesh.H"
     #include "createControls.H"
     #include "createFields.H"
+    #include "meshQualityWarning.H"
 
     // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 

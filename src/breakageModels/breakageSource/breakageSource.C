@@ -26,20 +26,10 @@ Foam::dictionary Foam::breakageSource::selectionDict
 }
 
 
-Foam::List<Foam::breakageWeights> Foam::breakageSource::fragmentWeights
-(
-    const granularMixture& mixture,
-    const dictionary& breakageDict,
-    bool& dustSink
-)
+bool Foam::breakageSource::readFines(const dictionary& breakageDict)
 {
-    dustSink = false;
     const word fines(breakageDict.getOrDefault<word>("fines", "finestClass"));
-    if (fines == "dust")
-    {
-        dustSink = true;
-    }
-    else if (fines != "finestClass")
+    if (fines != "dust" && fines != "finestClass")
     {
         FatalIOErrorInFunction(breakageDict)
             << "Unknown 'fines " << fines << "' in " << breakageDict.name()
@@ -48,6 +38,18 @@ Foam::List<Foam::breakageWeights> Foam::breakageSource::fragmentWeights
             << " field, volume and number accounted)" << nl
             << exit(FatalIOError);
     }
+    return fines == "dust";
+}
+
+
+Foam::List<Foam::breakageWeights> Foam::breakageSource::fragmentWeights
+(
+    const granularMixture& mixture,
+    const dictionary& breakageDict,
+    bool& dustSink
+)
+{
+    dustSink = readFines(breakageDict);
 
     if (!breakageDict.isDict("daughterSizeDistribution"))
     {
@@ -103,6 +105,28 @@ Foam::breakageSource::breakageSource
 {
     if (!selection_->active())
     {
+        // Nothing breaks, but the entries of the source that are given are
+        // read as for an active model: a malformed one is refused now, not
+        // when the breakage is switched on
+        if (breakageDict.found("daughterSizeDistribution"))
+        {
+            bool dustSink;
+            fragmentWeights(mixture, breakageDict, dustSink);
+        }
+        else
+        {
+            readFines(breakageDict);
+        }
+        if
+        (
+            breakageDict.found("daughterSizeDistribution")
+         || breakageDict.found("fines")
+        )
+        {
+            Info<< "Breakage: model none; 'fines' and"
+                << " 'daughterSizeDistribution' checked, not used" << nl
+                << endl;
+        }
         return;
     }
 

@@ -210,12 +210,22 @@ void Foam::calibratedLaw::readLaw(const dictionary& coeffsDict)
     parameters_.resize(label(names.size()));
     for (std::size_t i = 0; i < names.size(); ++i)
     {
-        const scalar v = dict.get<scalar>(names[i]);
+        // OpenFOAM's parser reads `nan` or `inf` as a word: refused here
+        // naming the parameter, as a non-finite number would be
+        const ITstream& is = dict.lookup(names[i]);
+        const bool number = is.size() == 1 && is[0].isNumber();
+        const scalar v =
+            number ? is[0].number() : std::numeric_limits<scalar>::quiet_NaN();
         if (!std::isfinite(v))
         {
             FatalIOErrorInFunction(dict)
                 << "Parameter '" << names[i].c_str() << "' of " << coefficient
-                << " is not finite" << nl << exit(FatalIOError);
+                << " is not a finite number:";
+            for (const token& tok : is)
+            {
+                FatalIOError<< ' ' << tok;
+            }
+            FatalIOError<< nl << exit(FatalIOError);
         }
         parameters_(i) = v;
     }

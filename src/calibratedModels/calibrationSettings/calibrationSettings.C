@@ -124,7 +124,9 @@ Foam::calibrationSettings::fineAndCoarse
     if (!(pair[1].d > pair[0].d))
     {
         FatalIOErrorInFunction(speciesContext)
-            << "The two species have the same diameter: no fine and coarse"
+            << "The two species " << pair[0].name << " and " << pair[1].name
+            << " have the same diameter 'd " << pair[0].d << "' in 'species'"
+            << " of " << speciesContext.name() << ": no fine and coarse"
             << nl << exit(FatalIOError);
     }
     return pair;
