@@ -1,0 +1,135 @@
+# shellcheck shell=bash
+# The README's commands as a newcomer types them (sourced by tests/run;
+# tests readme/allrun/*): the main job ./Allrun, serial and on 2 ranks, in
+# the project's own tutorials/silo2D (where the README sends the user), and
+# tutorials/pipeBend/Allrun in a copy of the tutorials.
+
+# The documented outcome of the default silo2D run (tutorials/silo2D/README.md,
+# "What it shows"; docs/user/outputs.md): the fields each written time
+# holds, the wedge's mass flow, the outflow's coarse-fraction peak
+readme_silo2D_checks()
+{
+    local case="$1"
+    local t f
+    for t in 5 10 15 20 25 30
+    do
+        for f in n.fine n.coarse U T gammaDot dMean D.fine D.coarse
+        do
+            [ -f "$case/$t/$f" ] || { echo "missing $case/$t/$f (README: fields in the time directories)"; return 1; }
+        done
+    done
+    for f in postProcessing/outletComposition/0/outlet.dat postProcessing/sizeDistribution/0/sizeDistribution.dat
+    do
+        head -n 1 "$case/$f" | grep -q '^#' || { echo "$case/$f: missing or without a header line"; return 1; }
+    done
+    # a PNG, not an empty file or an error page: the signature's bytes
+    head -c 8 "$case/results/outletComposition.png" | od -An -c | grep -q 'P   N   G' \
+        || { echo "$case/results/outletComposition.png is not a PNG"; return 1; }
+    python3 -m sdfoam.fieldStats "$case" bounds --tol 1e-8 || return 1
+    python3 - "$case" <<'PY'
+import math, sys
+case = sys.argv[1]
+rows = [l.split() for l in open(case + "/postProcessing/outletComposition/0/outlet.dat") if not l.startswith("#")]
+header = [l for l in open(case + "/postProcessing/outletComposition/0/outlet.dat") if l.startswith("# time")][-1].split()[1:]
+col = {name.split("[")[0]: i for i, name in enumerate(header)}   # time[s] -> time
+t = [float(r[col["time"]]) for r in rows]
+mdot = [float(r[col["massFlow"]]) for r in rows]
+coarse = [float(r[col["massFraction.coarse"]]) for r in rows]
+# Beverloo by hand (the kinematic discharge test's formula) through the 5-degree
+# wedge's share of the outlet, at packed fraction 0.6 and rho 2500 kg/m3; the
+# wedge's outlet area on the mesh differs from the disc's share by < 1e-3
+Q = 0.58 * math.sqrt(9.81) * (0.04 - 1.5 * 1.2e-3) ** 2.5 * math.tan(math.radians(30)) ** -0.35
+mBeverloo = Q * math.sin(math.radians(5)) / (2 * math.pi) * 0.6 * 2500
+dev = max(abs(m / mBeverloo - 1) for m in mdot)
+i = max(range(len(coarse)), key=coarse.__getitem__)
+print("outlet: %d rows to t = %g s; mass flow within %.2e of Beverloo's %.5e kg/s; "
+      "coarse fraction %.4f at t = 0, peak %.4f at %.2f s, %.4f at the end"
+      % (len(rows), t[-1], dev, mBeverloo, coarse[0], coarse[i], t[i], coarse[-1]))
+ok = abs(t[-1] - 30) < 1e-9 and dev < 1e-3
+# the README's description: from 0.20 to 0.43 at t ~ 19 s, then 0.10 at 30 s
+ok = ok and abs(coarse[0] - 0.20) < 1e-3 and abs(coarse[i] - 0.43) < 0.005 and abs(t[i] - 19) < 1
+ok = ok and abs(coarse[-1] - 0.10) < 0.005
+sys.exit(0 if ok else 1)
+PY
+}
+
+# ./Allrun, then ./Allrun -parallel, in the project's tutorials/silo2D (each
+# run starts with the tutorial's Allclean, so earlier results there are
+# replaced, as they are when a user runs it; the tutorial is cleaned after):
+# both succeed, write what the README lists, and the 2 ranks reproduce the
+# serial outflow to the linear solvers' tolerance
+test_readme_allrun()
+{
+    local tutorial="$projectDir/tutorials/silo2D" dir="$workRoot/readmeAllrun"
+    rm -rf "$dir"; mkdir -p "$dir"
+    # shellcheck disable=SC2064
+    trap "'$tutorial/Allclean' > /dev/null 2>&1" EXIT
+    [ -z "${README_ALLRUN_KEEP:-}" ] || trap - EXIT   # keep the results to look at
+    ./Allrun > "$dir/log.Allrun" 2>&1 || { tail -n 30 "$dir/log.Allrun"; return 1; }
+    grep -q "silo2D results in" "$dir/log.Allrun" || { echo "./Allrun did not say where the results are"; return 1; }
+    readme_silo2D_checks "$tutorial" || return 1
+    cp "$tutorial/postProcessing/outletComposition/0/outlet.dat" "$dir/outlet.serial.dat"
+
+    ./Allrun -parallel > "$dir/log.Allrun-parallel" 2>&1 || { tail -n 30 "$dir/log.Allrun-parallel"; return 1; }
+    grep -q "^Starting.*-parallel\|mpirun" "$tutorial/log.segregationDegradationFoam" 2> /dev/null \
+        || [ -d "$tutorial/processor1" ] || { echo "./Allrun -parallel did not run on 2 ranks"; return 1; }
+    readme_silo2D_checks "$tutorial" || return 1
+    cp "$tutorial/postProcessing/outletComposition/0/outlet.dat" "$dir/outlet.parallel.dat"
+    python3 - "$dir/outlet.serial.dat" "$dir/outlet.parallel.dat" <<'PY'
+import sys
+rows = [[[float(x) for x in l.split()] for l in open(f) if not l.startswith("#")] for f in sys.argv[1:]]
+header = [l for l in open(sys.argv[1]) if l.startswith("# time")][-1].split()[1:]
+serial, parallel = rows
+if len(serial) != len(parallel):
+    print("serial %d rows, parallel %d" % (len(serial), len(parallel))); sys.exit(1)
+# relative to each column's largest value; the solvers converge to 1e-6 of
+# the residual (parallelCheck in the tutorial: 1.3e-8 over 2 s)
+worst, where = 0.0, None
+for j in range(len(serial[0])):
+    scale = max(abs(r[j]) for r in serial) or 1.0
+    for a, b in zip(serial, parallel):
+        if abs(a[j] - b[j]) / scale > worst:
+            worst, where = abs(a[j] - b[j]) / scale, (header[j], a[0], a[j], b[j])
+print("serial and 2 ranks: outlet series agree to %.2e (relative to each column's largest value); "
+      "worst: %s at t = %g s, %.9g serial, %.9g on 2 ranks" % ((worst,) + where))
+sys.exit(0 if worst < 1e-6 else 1)
+PY
+}
+
+# tutorials/pipeBend/Allrun as the README gives it, on the tutorial's coarse
+# mesh (-mesh coarse) at 30 m/s, where the parent breaks most (the smallest
+# relative error of the reference), with its Lagrangian reference
+# (-reference): fines per bend written with a header and a row whose broken
+# fraction is the sum of its shares, and the continuum's broken fraction
+# within 2 sqrt(2) sigma_ref of the reference's (docs/validation.md, "Continuum
+# against the Lagrangian reference": the reference's binomial error, and the
+# continuum's pass of as many parents carrying about the same)
+test_readme_pipe_bend()
+{
+    local dir="$workRoot/readmePipeBend"
+    rm -rf "$dir"; mkdir -p "$dir/tutorials"
+    cp -r "$projectDir/tutorials/pipeBend" "$dir/tutorials/"
+    "$dir/tutorials/pipeBend/Allclean" > /dev/null 2>&1
+    "$dir/tutorials/pipeBend/Allrun" -mesh coarse -velocity 30 -reference > "$dir/log.Allrun" 2>&1 \
+        || { tail -n 30 "$dir/log.Allrun"; return 1; }
+    python3 - "$dir/tutorials/pipeBend/results" <<'PY'
+import math, sys
+results = sys.argv[1]
+lines = open(results + "/finesPerBend.dat").read().splitlines()
+if len(lines) != 2 or not lines[0].startswith("#"):
+    print("finesPerBend.dat: expected one header line and one row, got", lines); sys.exit(1)
+header, row = lines[0][1:].split(), lines[1].split()
+values = dict(zip(header, row))
+broken = float(values["brokenFraction"])
+shares = [float(values[k]) for k in header if k.endswith("/fed")]
+print("finesPerBend: broken fraction %.6e, shares %s (sum %.6e)" % (broken, shares, sum(shares)))
+ok = 0 < broken < 1 and all(s >= 0 for s in shares) and abs(sum(shares) - broken) <= 1e-6 * broken
+rows = [l.split() for l in open(results + "/reference.dat") if not l.startswith("#")]
+parent, cont, ref, sigma = rows[0][0], float(rows[0][1]), float(rows[0][2]), float(rows[0][3])
+z = (cont - ref) / sigma
+print("continuum %.4e, reference %.4e +- %.2e: %.2f sigma_ref (band 2 sqrt(2) = %.2f)"
+      % (cont, ref, sigma, z, 2 * math.sqrt(2)))
+ok = ok and parent == "d2mm" and abs(cont - broken) <= 1e-6 * broken and abs(z) <= 2 * math.sqrt(2)
+sys.exit(0 if ok else 1)
+PY
+}
