@@ -6,12 +6,27 @@
 # equals the full list filtered here by substring; every ctest test of
 # calibration/ is in the full list as calibration/<name>; a pattern that
 # matches nothing selects nothing and runs nothing ("0 passed, 0 failed",
-# exit 0); "-k <one ctest name>" runs that ctest test alone
+# exit 0); "-k <one ctest name>" runs that ctest test alone. The runs
+# here write their logs under their own work directory, not over the
+# outer run's (build/tests/calibration-ctest.log is what the outer run
+# names for a failed ctest test)
 test_driver_selection()
 {
     local dir="$workRoot/driverSelection"
     rm -rf "$dir"; mkdir -p "$dir"
-    tests/run -l > "$dir/all.txt" || { echo "tests/run -l failed"; return 1; }
+    # tests/run works in <project>/build/tests of the tree it is started
+    # from: a tree of links to this project whose build/ holds only the
+    # calibration build keeps the inner runs' logs in $dir/tree/build/tests
+    local tree="$dir/tree" entry
+    mkdir -p "$tree/build"
+    for entry in "$projectDir"/*
+    do
+        [ "${entry##*/}" = build ] || ln -s "$entry" "$tree/${entry##*/}"
+    done
+    ln -s "$projectDir/build/calibration" "$tree/build/calibration"
+    local run="$tree/tests/run" outerLog="$workRoot/calibration-ctest.log" outerBefore
+    outerBefore=$(cksum < "$outerLog" 2>/dev/null || echo none)
+    "$run" -l > "$dir/all.txt" || { echo "tests/run -l failed"; return 1; }
     local total
     total=$(wc -l < "$dir/all.txt")
     echo "tests/run -l: $total tests"
@@ -37,26 +52,31 @@ test_driver_selection()
         periodicDEM /run validation/ driver/ noTestIsCalledThis
     do
         grep -F -- "$pattern" "$dir/all.txt" > "$dir/expected.txt"
-        tests/run -l -k "$pattern" > "$dir/got.txt" || { echo "tests/run -l -k '$pattern' failed"; return 1; }
+        "$run" -l -k "$pattern" > "$dir/got.txt" || { echo "tests/run -l -k '$pattern' failed"; return 1; }
         n=$(wc -l < "$dir/got.txt")
         printf '  -k %-40s %3d selected\n' "'$pattern'" "$n"
         diff "$dir/expected.txt" "$dir/got.txt" > /dev/null \
             || { echo "selection for '$pattern' differs (< expected, > selected):"; diff "$dir/expected.txt" "$dir/got.txt"; return 1; }
     done
-    [ "$(tests/run -l -k noTestIsCalledThis | wc -l)" -eq 0 ] || { echo "a pattern matching nothing selected tests"; return 1; }
-    [ "$(tests/run -l -k "$firstCtest" | wc -l)" -ge 1 ] || return 1
+    [ "$("$run" -l -k noTestIsCalledThis | wc -l)" -eq 0 ] || { echo "a pattern matching nothing selected tests"; return 1; }
+    [ "$("$run" -l -k "$firstCtest" | wc -l)" -ge 1 ] || return 1
     [ "$(grep -c "^calibration/" "$dir/all.txt")" -gt "$nCtest" ] \
         || { echo "no non-ctest calibration/ tests in the list"; return 1; }
 
     # running: nothing selected runs nothing; one ctest name runs just it
-    tests/run -k noTestIsCalledThis > "$dir/none.txt" 2>&1 || { echo "exit status non-zero with nothing run"; cat "$dir/none.txt"; return 1; }
+    "$run" -k noTestIsCalledThis > "$dir/none.txt" 2>&1 || { echo "exit status non-zero with nothing run"; cat "$dir/none.txt"; return 1; }
     tail -1 "$dir/none.txt" | grep -qx "0 passed, 0 failed" || { cat "$dir/none.txt"; return 1; }
     grep -q "^PASS\|^FAIL" "$dir/none.txt" && { echo "something ran"; return 1; }
-    tests/run -k "$firstCtest" > "$dir/one.txt" 2>&1 || { cat "$dir/one.txt"; return 1; }
+    "$run" -k "$firstCtest" > "$dir/one.txt" 2>&1 || { cat "$dir/one.txt"; return 1; }
     cat "$dir/one.txt"
     [ "$(grep -c "^PASS\|^FAIL" "$dir/one.txt")" -eq "$(grep -cF -- "$firstCtest" "$dir/all.txt")" ] \
         || { echo "-k '$firstCtest' ran other tests"; return 1; }
     grep -q "^PASS  $firstCtest " "$dir/one.txt" || return 1
     tail -1 "$dir/one.txt" | grep -qE "^[0-9]+ passed, 0 failed$" || return 1
+    # the inner ctest run's log is its own, the outer run's is untouched
+    grep -q "Test .*: ${firstCtest#calibration/} " "$tree/build/tests/calibration-ctest.log" \
+        || { echo "no ctest log of the inner run in $tree/build/tests"; return 1; }
+    [ "$(cksum < "$outerLog" 2>/dev/null || echo none)" = "$outerBefore" ] \
+        || { echo "the inner run wrote $outerLog, the outer run's ctest log"; return 1; }
     echo "selection by name holds for ctest and driver tests"
 }
