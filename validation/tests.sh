@@ -361,9 +361,18 @@ PY
     done
 }
 
+# validation/convergenceStudy: every case on its meshes held to the study's
+# targets (column and Gaussian: order >= 1.8; chute, upwind and the three
+# TVD variants: meeting point within 2 %, L1 order >= 0.8, bounds and
+# n.fine + n.coarse = 1 to 1e-8 on every mesh), every error figure equal to
+# the published results file's (1e-4 relative), and docs/validation.md's
+# generated part the one that file gives
 test_convergence_study()
 {
-    validation/convergenceStudy --no-docs --work "$workRoot/validation"
+    local dir="$workRoot/validation"
+    "$validationDir/convergenceStudy" --check-docs || return 1
+    "$validationDir/convergenceStudy" --work "$dir" --results "$dir/convergenceStudy-results.json" \
+        --compare "$validationDir/convergenceStudy-results.json"
 }
 
 # Breakage on one closed cell (validation/breakageSingleCell): the class-edge
@@ -947,16 +956,29 @@ PY
 # (polyhedra) and on a snappyHexMesh refinement (split hexahedra along
 # staircase level transitions), with the species' gradient
 # pointCellsLeastSquares, 20, 40 and 80 cells along
-# (validation/unstructuredMeshes/study): observed order of the finest pair
-# at least 1.5 in L1 and 1 in the max norm, every species within [0, the
-# total] (1e-8) and its volume kept (1e-10) on every mesh. Measured: L1
-# 2.00-2.38, max 1.26-2.12, volumes to 4.8e-11; with Gauss linear the
-# column's error does not converge on the distorted and polyhedral meshes
-# (docs/validation.md)
+# (validation/unstructuredMeshes/study): second order in L1, the finest
+# pair's observed order at least 1.8, and at least 1 in the max norm;
+# every species within [0, the case's largest solids fraction] and their
+# total below it (sdfoam.fieldStats bounds, 1e-8) at every written time
+# and each species' volume kept (1e-10) on every mesh. Measured: L1
+# 2.00-2.38 (1.97-2.08 between 20 and 40), max 1.26-2.12, volumes to
+# 4.8e-11. 1.8 is 2 less 10 % (as validation/neddermanTuzunSlot): the
+# orders scatter about 2 from pair to pair because the seeded distortion
+# is not a smooth mapping of the mesh, while a first-order error, or the
+# Gauss linear gradient whose non-orthogonal correction does not converge
+# (the column's L1 orders -0.64, 0.49 and 1.72 on these meshes,
+# docs/validation.md), falls below it. The max norm is
+# held to first order only: on the distorted quadrilaterals the column's
+# largest error sits in the cells at the bottom wall (max orders 1.26,
+# then 1.05 between 80 and 160)
 test_unstructured_meshes()
 {
-    local dir="$workRoot/unstructuredMeshes"
+    local dir="$workRoot/unstructuredMeshes" case
     rm -rf "$dir"
     "$validationDir/unstructuredMeshes/study" --kinds distorted,polyDual,snappy --meshes 20,40,80 \
-        --grad pointCellsLeastSquares --min-order-l1 1.5 --min-order-max 1 --work "$dir"
+        --grad pointCellsLeastSquares --min-order-l1 1.8 --min-order-max 1 --work "$dir" || return 1
+    for case in "$dir"/*-*-*/
+    do
+        python3 -m sdfoam.fieldStats "${case%/}" bounds --tol 1e-8 || return 1
+    done
 }

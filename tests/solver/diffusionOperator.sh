@@ -50,8 +50,10 @@ EOF
     echo "ddtSchemes { default Euler; }" > "$sdf/system/fvSchemesParameters"
     blockMesh -case "$sdf" > "$sdf/log.blockMesh" 2>&1 || { cat "$sdf/log.blockMesh"; return 1; }
     checkMesh -case "$sdf" > "$sdf/log.checkMesh" 2>&1 || { cat "$sdf/log.checkMesh"; return 1; }
-    # The initial pulse: n.tracer = 0.3 exp(-r^2/(2 0.1^2)) around
-    # (0.75, 0.5), n.bulk = 0.6 - n.tracer; T = n.tracer
+    # The initial pulse: n.tracer = 0.01 + 0.29 exp(-r^2/(2 0.1^2)) around
+    # (0.75, 0.5), n.bulk = 0.6 - n.tracer; T = n.tracer (the background
+    # keeps every species above 1e-6 of the solids, below which
+    # speciesAdvection scales the correction down)
     mkdir -p "$stf/0" "$stf/constant" "$stf/system"
     cp -r "$sdf/constant/polyMesh" "$stf/constant/"
     python3 - "$sdf" "$stf" <<'PY' || return 1
@@ -59,7 +61,7 @@ import math, os, re, sys
 from sdfoam import foamcase
 sdf, stf = sys.argv[1:3]
 C = foamcase.cellCentres(sdf)
-tracer = [0.3 * math.exp(-((c[0] - 0.75)**2 + (c[1] - 0.5)**2) / (2 * 0.1**2)) for c in C]
+tracer = [0.01 + 0.29 * math.exp(-((c[0] - 0.75)**2 + (c[1] - 0.5)**2) / (2 * 0.1**2)) for c in C]
 def field(values):
     return "internalField   nonuniform List<scalar>\n%d\n(\n%s\n)\n;" % (len(values), "\n".join("%.17g" % v for v in values))
 os.makedirs(sdf + "/0", exist_ok=True)

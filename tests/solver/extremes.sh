@@ -3,7 +3,7 @@
 # closed box of tests/solver/closedBox (cyclic in x, walls at the base and the lid,
 # 16 x 24 cells, shear flow, diffusion, kinetic sieving and percolation on) pushed to one
 # extreme at a time. Every case runs and is
-#   bounded       0 <= n_i <= sum_j n_j at every written time (tolerance 1e-8), no
+#   bounded       0 <= n_i, sum_j n_j <= P (fieldStats) at every written time (tolerance 1e-8), no
 #                 non-finite value in any written field (sdfoam.fieldStats bounds),
 #   conservative  the closed box's solids volume (each species' without breakage) equal
 #                 to its initial value to 1e-10 relative over every step (the solver's
@@ -52,29 +52,23 @@ fixed_step()
     foamDictionary -entry deltaT -set "$2" "$1/system/controlDict" > /dev/null
 }
 
-# test_extreme KIND: one row of the matrix
-test_extreme()
+# no_diffusion_case DIR CO: the closed box without diffusion at a fixed step of Courant
+# number CO of the fastest cell (deltaT = CO/16 s), 25 s, written at 12.5 and 25 s
+no_diffusion_case()
 {
-    local kind="$1" dir="$workRoot/extremes-$1"
-    local gp="$dir/constant/granularProperties" conserved=perSpecies own="" bounds=1e-8
-    case "$kind" in
-        noDiffusionCo1|noDiffusionCo5|noDiffusionCo50)
-            # Pe -> infinity: no diffusion, a fixed step at Courant number 1, 5, 50 of the
-            # fastest cell (|U| = 1 m/s, dx = 1/16 m; the segregation fluxes then run at
-            # up to that Courant number too), 25 s: long past the layer's segregation
-            # time. Exact end state without diffusion: fully segregated, the fines' 9.5
-            # rows (of the layer's 19 at n = 0.6) at the base, their centre of mass at
-            # z = 0.1985 m: within 1e-3 m at Courant 1 and 5. At 50 the explicit, limited
-            # exchange stalls with three rows mixed 0.3/0.3 at the interface (0.2029 m):
-            # held to that, within 5e-3 m, so that a worse stall fails
-            local co="${kind#noDiffusionCo}" tolerance=1e-3
-            [ "$co" = 50 ] && tolerance=5e-3
-            extreme_case "$dir" 0.3 0.3
-            foamDictionary -entry diffusivity -set "{ model none; }" "$gp" > /dev/null
-            fixed_step "$dir" "$(python3 -c "print($co/16)")"
-            foamDictionary -entry endTime -set 25 "$dir/system/controlDict" > /dev/null
-            foamDictionary -entry writeInterval -set 12.5 "$dir/system/controlDict" > /dev/null
-            own='
+    local dir="$1" co="$2"
+    extreme_case "$dir" 0.3 0.3
+    foamDictionary -entry diffusivity -set "{ model none; }" "$dir/constant/granularProperties" > /dev/null
+    fixed_step "$dir" "$(python3 -c "print($2/16)")"
+    foamDictionary -entry endTime -set 25 "$dir/system/controlDict" > /dev/null
+    foamDictionary -entry writeInterval -set 12.5 "$dir/system/controlDict" > /dev/null
+}
+
+# no_diffusion_segregated: the closed box's check (closed_box_check's PYTHON) that the
+# layer ended fully segregated: the fines' centre of mass within 1e-3 m of 0.1985 m
+no_diffusion_segregated()
+{
+    cat <<'PY'
 from sdfoam import foamcase
 t = foamcase.latestTime(case)
 fine = foamcase.readScalarField(case, t, "n.fine")
@@ -82,9 +76,76 @@ z = [(k // 16 + 0.5) / 24 for k in range(len(fine))]   # blockMesh order: x fast
 layerRows = 19                                           # cell centres below z = 0.8
 exact = (0.6 * sum(j + 0.5 for j in range(9)) + 0.3 * 9.5) / (0.6 * layerRows / 2) / 24
 zc = sum(f * h for f, h in zip(fine, z)) / sum(fine)
-print("fines centre of mass at t = %s: %.4f m, fully segregated %.4f m (tolerance %g m)"
-      % (t, zc, exact, '"$tolerance"'))
-ok &= abs(zc - exact) <= '"$tolerance"''
+print("fines centre of mass at t = %s: %.4f m, fully segregated %.4f m (tolerance 1e-3 m)" % (t, zc, exact))
+ok &= abs(zc - exact) <= 1e-3
+PY
+}
+
+# test_extreme KIND: one row of the matrix
+test_extreme()
+{
+    local kind="$1" dir="$workRoot/extremes-$1"
+    local gp="$dir/constant/granularProperties" conserved=perSpecies own="" bounds=1e-8
+    case "$kind" in
+        noDiffusionCo1|noDiffusionCo5)
+            # Pe -> infinity: no diffusion, a fixed step at Courant number 1 or 5 of the
+            # fastest cell (|U| = 1 m/s, dx = 1/16 m; the segregation fluxes then run at
+            # up to that Courant number too), 25 s: long past the layer's segregation
+            # time. Exact end state without diffusion: fully segregated, the fines' 9.5
+            # rows (of the layer's 19 at n = 0.6) at the base, their centre of mass at
+            # z = 0.1985 m, within 1e-3 m
+            local co="${kind#noDiffusionCo}"
+            no_diffusion_case "$dir" "$co"
+            own="$(no_diffusion_segregated)"
+            ;;
+        noDiffusionCo50)
+            # Courant 50, where the explicit segregation exchange cannot follow: its
+            # positivity limiter cuts a cell's outflow to its content, so a composition
+            # front moves at most one cell per step. Adjustable step (maxCo 50): the
+            # segregation Courant number sets the step (maxSegregationCo 0.5 on every
+            # step, the bulk Courant number below 50) and the layer ends fully
+            # segregated as at Courant 1 (0.1985 m within 1e-3 m). Fixed step at
+            # Courant 50 (segregation Courant number 46), 8 steps: the solver warns
+            # once, naming maxSegregationCo, adjustTimeStep and deltaT, and lags by
+            # exactly one row per step: after s steps the s lowest rows are pure fines
+            # (0.6), the s highest of the layer pure coarse, the 19 - 2 s between
+            # still mixed 0.3/0.3 (s = 8: centre of mass 0.2029 m; full segregation
+            # needs s = 9): every cell of n.fine within 1e-10 of that
+            no_diffusion_case "$dir-adaptive" 50
+            foamDictionary -entry adjustTimeStep -set yes "$dir-adaptive/system/controlDict" > /dev/null
+            foamDictionary -entry maxCo -set 50 "$dir-adaptive/system/controlDict" > /dev/null
+            closed_box_run "$dir-adaptive" || return 1
+            closed_box_check "$dir-adaptive" perSpecies "$(no_diffusion_segregated)"'
+import re
+# Each step prints its Courant numbers at the previous step (the first: the
+# controlDict deltaT, 3.125 s), then the step it sets: those of the step taken
+# are the printed ones times new/previous step
+log = open(case + "/log.solver").read()
+printed = [tuple(map(float, m)) for m in re.findall(r"Courant Number max: (\S+)  segregation Courant Number max: (\S+)", log)]
+dt = [float(v) for v in re.findall(r"^deltaT = (\S+)", log, re.M)]
+co = [(c * new / old, s * new / old) for (c, s), new, old in zip(printed, dt, [3.125] + dt)]
+print("adjustable step, maxCo 50: %d steps, largest bulk Courant number %.4g, largest segregation Courant number %.12g (maxSegregationCo 0.5)"
+      % (len(co), max(c for c, s in co), max(s for c, s in co)))
+ok &= len(co) == len(dt) == len(rows) - 1 and max(s for c, s in co) <= 0.5 * (1 + 1e-9) and max(c for c, s in co) <= 50' || return 1
+            no_diffusion_case "$dir" 50
+            own='
+import re
+from sdfoam import foamcase
+log = open(case + "/log.solver").read()
+warnings = re.findall(r"segregation Courant number \S+ exceeds maxSegregationCo 0.5 with adjustTimeStep off \(deltaT 3.125 in \S*controlDict\"?\)", log)
+print("fixed step at Courant 50: the warning %d time(s): %s" % (len(warnings), warnings[:1]))
+ok &= len(warnings) == 1 and log.count("said once") == 1
+steps = len(rows) - 1                                    # rows: the Initial line, then every step
+fine = foamcase.readScalarField(case, foamcase.latestTime(case), "n.fine")
+def lagged(row):
+    if row >= 19:
+        return 0.0
+    return 0.6 if row < steps else 0.0 if row >= 19 - steps else 0.3
+worst = max(abs(f - lagged(k // 16)) for k, f in enumerate(fine))
+z = [(k // 16 + 0.5) / 24 for k in range(len(fine))]
+print("after %d steps: n.fine against one row per step from each end: max difference %.2e; centre of mass %.5f m"
+      % (steps, worst, sum(f * h for f, h in zip(fine, z)) / sum(fine)))
+ok &= steps == 8 and worst <= 1e-10'
             ;;
         dilute)
             # phi -> 0: 1e-12 solids in the layer. The diffusivity vanishes with the
