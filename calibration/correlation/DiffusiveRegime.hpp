@@ -81,7 +81,11 @@ struct DiffusiveRegimeCheck
     Estimate lateSlope;           // D over its second half
     Estimate slopeChange;         // late - early, per block
     Estimate msd;                 // D_MSD over the whole window
-    Estimate greenKuboMinusMsd;   // D_GK - D_MSD, errors in quadrature
+    //- D_GK - D_MSD. Both come from the same blocks of one trajectory and move together
+    //  (a block of fast particles raises both), so when the two have one value per block
+    //  the error is the jackknife of the difference over those blocks, which includes
+    //  their covariance; otherwise (other block counts) the errors in quadrature.
+    Estimate greenKuboMinusMsd;
     Estimate drift;               // D of the later blocks - D of the earlier blocks
     bool windowPastDecay = false;
     bool slopeFlat = false;

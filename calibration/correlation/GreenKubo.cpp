@@ -262,6 +262,7 @@ GreenKuboResult greenKubo
             }
         }
         const Plateau jack = findPlateau(times, blockIntegrals, subset, settings);
+        result.leaveOneOut.push_back(jack.value);
         squares += (jack.value - all.value) * (jack.value - all.value);
     }
     const double count = static_cast<double>(blocks);

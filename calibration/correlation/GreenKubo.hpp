@@ -64,6 +64,10 @@ struct GreenKuboResult
     //  with latestTime, longer blocks); the integral then reports the last
     //  window anyway, from earliestTime on where it fits.
     bool plateauFound = false;
+    //- The plateau value of each leave-one-block-out set, in block order (the
+    //  jackknife's): paired with another estimate's from the same blocks, they give
+    //  the error of a difference with the covariance of the two included.
+    std::vector<double> leaveOneOut;
 
     std::vector<double> times;
     std::vector<double> meanCorrelation, correlationError;

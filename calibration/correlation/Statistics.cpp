@@ -1,6 +1,9 @@
 #include "correlation/Statistics.hpp"
 
+#include <gsl/gsl_cdf.h>
+
 #include <cmath>
+#include <cstdio>
 #include <stdexcept>
 #include <string>
 
@@ -96,6 +99,70 @@ Estimate inverseVarianceMean(const std::vector<Estimate>& estimates)
         samples += e.samples;
     }
     return Estimate{weightedSum / weightSum, std::sqrt(1.0 / weightSum), samples};
+}
+
+AgreementOverCells agreementOverCells
+(
+    const std::vector<double>& z,
+    double chiSquareLevel,
+    double meanSigmas,
+    double familyLevel
+)
+{
+    if (z.size() < 2)
+    {
+        throw std::invalid_argument
+        (
+            "agreementOverCells: needs >= 2 cells, got " + std::to_string(z.size())
+        );
+    }
+    for (const double v : z)
+    {
+        if (!std::isfinite(v))
+        {
+            throw std::invalid_argument("agreementOverCells: a z is not finite (a zero error?)");
+        }
+    }
+    if (!(chiSquareLevel > 0 && chiSquareLevel < 1) || !(familyLevel > 0 && familyLevel < 1))
+    {
+        throw std::invalid_argument
+        (
+            "agreementOverCells: chiSquareLevel " + std::to_string(chiSquareLevel)
+          + " and familyLevel " + std::to_string(familyLevel) + " must lie in (0, 1)"
+        );
+    }
+    AgreementOverCells a;
+    a.cells = z.size();
+    const double dof = double(a.cells);
+    for (const double v : z) a.chiSquare += v*v;
+    a.chiSquareLow = gsl_cdf_chisq_Pinv(0.5*(1 - chiSquareLevel), dof);
+    a.chiSquareHigh = gsl_cdf_chisq_Qinv(0.5*(1 - chiSquareLevel), dof);
+    a.meanZ = meanAndStandardError(z);
+    a.meanSigmas = meanSigmas;
+    // per cell two-sided p with 1 - (1 - p)^n = familyLevel
+    const double perCell = -std::expm1(std::log1p(-familyLevel)/dof);
+    a.threshold = gsl_cdf_ugaussian_Qinv(0.5*perCell);
+    for (std::size_t i = 0; i < z.size(); ++i)
+    {
+        if (std::abs(z[i]) > a.threshold) a.flagged.push_back(i);
+    }
+    return a;
+}
+
+std::string AgreementOverCells::summary() const
+{
+    char buf[256];
+    std::snprintf
+    (
+        buf, sizeof buf,
+        "%zu cells: chi2 %.1f in [%.1f, %.1f] %s; mean z %+.2f +- %.2f (%.1f of its errors,"
+        " limit %g) %s; beyond %.2f: %zu %s",
+        cells, chiSquare, chiSquareLow, chiSquareHigh, chiSquareInside() ? "yes" : "NO",
+        meanZ.value, meanZ.standardError,
+        meanZ.standardError > 0 ? std::abs(meanZ.value)/meanZ.standardError : 0.0, meanSigmas,
+        meanWithin() ? "yes" : "NO", threshold, flagged.size(), flagged.empty() ? "yes" : "NO"
+    );
+    return buf;
 }
 
 } // namespace sdf::correlation
