@@ -242,37 +242,6 @@ break_case()
     esac
 }
 
-# check_refusal DIR APP EXPECT...: APP on DIR exits non-zero with a fatal
-# error holding every EXPECT (the solver's own message, not just a name
-# that any error about the file would carry), does not crash, and writes
-# no time directory
-check_refusal()
-{
-    local dir="$1" app="$2"; shift 2
-    if "$app" -case "$dir" > "$dir/log.$app" 2>&1
-    then
-        echo "$app accepted the bad input"; return 1
-    fi
-    local fatal
-    fatal=$(sed -n '/FOAM FATAL/,/FOAM exiting\|FOAM aborting/p' "$dir/log.$app")
-    echo "$fatal" | head -12
-    [ -n "$fatal" ] || { echo "no FOAM FATAL error"; tail -5 "$dir/log.$app"; return 1; }
-    local e
-    for e in "$@"
-    do
-        if ! grep -qF -- "$e" <<< "$fatal"
-        then
-            echo "the fatal error lacks '$e'"; return 1
-        fi
-    done
-    if grep -q "Segmentation\|printStack" "$dir/log.$app"
-    then
-        echo "crashed instead of a clear error"; return 1
-    fi
-    local written
-    written=$(find "$dir" -mindepth 1 -maxdepth 1 -type d -regextype posix-extended -regex '.*/[0-9.eE+-]+' ! -name 0 | head -1)
-    [ -z "$written" ] || { echo "a time directory was written: $written"; return 1; }
-}
 
 # test_bad_input KIND: break the case one way (break_case), expect the
 # program's own fatal error for it and no time directory written
