@@ -28,6 +28,7 @@ readme_silo2D_checks()
     python3 -m sdfoam.fieldStats "$case" bounds --tol 1e-8 || return 1
     python3 - "$case" <<'PY'
 import math, sys
+from sdfoam.beverloo import hopperRate
 case = sys.argv[1]
 rows = [l.split() for l in open(case + "/postProcessing/outletComposition/0/outlet.dat") if not l.startswith("#")]
 header = [l for l in open(case + "/postProcessing/outletComposition/0/outlet.dat") if l.startswith("# time")][-1].split()[1:]
@@ -38,7 +39,7 @@ coarse = [float(r[col["massFraction.coarse"]]) for r in rows]
 # Beverloo by hand (the kinematic discharge test's formula) through the 5-degree
 # wedge's share of the outlet, at packed fraction 0.6 and rho 2500 kg/m3; the
 # wedge's outlet area on the mesh differs from the disc's share by < 1e-3
-Q = 0.58 * math.sqrt(9.81) * (0.04 - 1.5 * 1.2e-3) ** 2.5 * math.tan(math.radians(30)) ** -0.35
+Q = hopperRate(0.04, 1.2e-3, 30)
 mBeverloo = Q * math.sin(math.radians(5)) / (2 * math.pi) * 0.6 * 2500
 dev = max(abs(m / mBeverloo - 1) for m in mdot)
 i = max(range(len(coarse)), key=coarse.__getitem__)

@@ -25,13 +25,14 @@ test_kinematic_discharge()
     segregationDegradationFoam -case "$dir" > "$dir/log.solver" 2>&1 || { tail -30 "$dir/log.solver"; return 1; }
     python3 - "$dir" <<'PY'
 import math, re, sys
+from sdfoam.beverloo import hopperRate
 case = sys.argv[1]
 log = open(case + "/log.solver").read()
 Q = float(re.search(r"Beverloo discharge rate Q = (\S+)", log).group(1))
 Qmesh = float(re.search(r"outlet flux (\S+) m3/s on the mesh", log).group(1))
 div = float(re.search(r"max \|div\(phi\)\| V / sum\|phi\| = (\S+)", log).group(1))
 # Beverloo by hand: C sqrt(g) (D0 - k d)^2.5 (tan 30)^-0.35, d = 0.8*1 mm + 0.2*2 mm
-Qhand = 0.58 * math.sqrt(9.81) * (0.04 - 1.5 * 1.2e-3) ** 2.5 * math.tan(math.radians(30)) ** -0.35
+Qhand = hopperRate(0.04, 1.2e-3, 30)
 share = math.sin(math.radians(5)) / (2 * math.pi)   # 5 deg wedge of the outlet disc
 rows = [l.split() for l in open(case + "/postProcessing/outletComposition/0/outlet.dat") if not l.startswith("#")]
 Qout, mass, fracFine = float(rows[0][1]), float(rows[0][2]), float(rows[0][5])
@@ -466,7 +467,8 @@ if kind == "empty":
     sys.exit(0 if max(mass) == 0 else 1)
 # 0.6 packed fines through the wedge at the Beverloo rate (d = 1 mm now)
 import math
-Q = 0.58 * math.sqrt(9.81) * (0.04 - 1.5e-3) ** 2.5 * math.tan(math.radians(30)) ** -0.35
+from sdfoam.beverloo import hopperRate
+Q = hopperRate(0.04, 1e-3, 30)
 expected = Q * math.sin(math.radians(5)) / (2 * math.pi) * 0.6 * 2500
 worst = max(abs(m / expected - 1) for m in mass)
 print("singleSpecies: mass flow within %.2e of the Beverloo rate %.6e kg/s (d = 1 mm), largest |coarse flow| %.1e kg/s" % (worst, expected, coarse))

@@ -22,9 +22,22 @@
     fitFixedK(points, d, prefactor, k)
                                  the same at a given k, with the standard
                                  error of n
+    hopperRate(D0, d, hopperHalfAngle, C, k, g)
+                                 Beverloo's volume rate through a circular
+                                 outlet of a conical hopper, as the
+                                 kinematic bulk flow's dischargeRate
+                                 beverloo takes it (the tutorials' C 0.58,
+                                 k 1.5 by default)
 """
 import math
 import os
+
+
+def hopperRate(D0, d, hopperHalfAngle, C=0.58, k=1.5, g=9.81):
+    """C sqrt(g) (D0 - k d)^2.5 tan(hopperHalfAngle)^-0.35 [m3/s]: the
+    whole outlet's rate, outlet diameter D0 and mean particle diameter d in
+    m, the hopper's half angle in degrees."""
+    return C * math.sqrt(g) * (D0 - k * d) ** 2.5 * math.tan(math.radians(hopperHalfAngle)) ** -0.35
 
 
 def readRuns(work):

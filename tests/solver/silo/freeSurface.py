@@ -20,6 +20,7 @@ import re
 import sys
 
 from sdfoam import foamcase
+from sdfoam.beverloo import hopperRate
 
 case = sys.argv[1]
 packed, rho = 0.6, 2500.0
@@ -27,7 +28,7 @@ R, Hc, D0, theta, wedge = 0.15, 0.5, 0.04, 30.0, 5.0
 Hh = (R - D0 / 2) / math.tan(math.radians(theta))
 H = Hh + Hc
 d = 0.8e-3 + 0.2 * 2e-3
-Qfull = 0.58 * math.sqrt(9.81) * (D0 - 1.5 * d) ** 2.5 * math.tan(math.radians(theta)) ** -0.35
+Qfull = hopperRate(D0, d, theta)
 Qmesh = Qfull * math.sin(math.radians(wedge)) / (2 * math.pi)
 massRate = Qmesh * packed * rho
 

@@ -20,6 +20,8 @@ import struct
 import sys
 import zlib
 
+from sdfoam.beverloo import hopperRate
+
 case = sys.argv[1]
 failed = []
 
@@ -49,7 +51,7 @@ check("silo geometry threeD" in log, "geometry detected as threeD")
 D0 = float(re.search(r"D0 = (\S+) m", log).group(1))
 Q = float(re.search(r"Beverloo discharge rate Q = (\S+)", log).group(1))
 check(abs(D0 / 0.04 - 1) < 0.03, "orifice D0 = %.5g m from the mesh (%.2e from 0.04)" % (D0, D0 / 0.04 - 1))
-Qhand = 0.58 * math.sqrt(9.81) * (D0 - 1.5 * 1.2e-3) ** 2.5 * math.tan(math.radians(30)) ** -0.35
+Qhand = hopperRate(D0, 1.2e-3, 30)
 check(abs(Q / Qhand - 1) < 1e-9, "Q = %.9g m3/s vs %.9g by hand" % (Q, Qhand))
 rows = [[float(v) for v in l.split()] for l in
         open(os.path.join(case, "postProcessing/outletComposition/0/outlet.dat"))
