@@ -351,6 +351,21 @@ double ContactLaw::tangentialStiffness(const PairCoefficients& c, double delta) 
     );
 }
 
+double ContactLaw::normalStiffnessAtForce(double force) const
+{
+    double k = 0;
+    for (const PairCoefficients& c : pairs_)
+    {
+        k = std::max
+        (
+            k,
+            settings_.model == ContactModel::linearSpringDashpot
+          ? c.kn : 1.5*std::pow(c.hertzK, 2.0/3.0)*std::cbrt(std::max(force, 0.0))
+        );
+    }
+    return k;
+}
+
 double ContactLaw::maximumTimeStep() const
 {
     if (settings_.model == ContactModel::linearSpringDashpot)

@@ -124,6 +124,11 @@ public:
     //- Tangential stiffness at overlap delta > 0 (elastic energy of the tangential spring).
     double tangentialStiffness(const PairCoefficients& c, double delta) const;
 
+    //- The stiffest pair's normal stiffness dF_n/d delta [N/m] at the contact force
+    //  `force` (linear: k_n; Hertz: 1.5 K^{2/3} F^{1/3}); what a packing's compressibility
+    //  scales with (Barostat's automatic relaxation time)
+    double normalStiffnessAtForce(double force) const;
+
 private:
     //- The constants of one contact: the single ones, or a pair's values where set.
     struct PairConstants

@@ -150,6 +150,42 @@ Simulation::Simulation
         settings_.shearRate, dt_, settings_.seed
     );
     box_.shearRate = driving_->shearRate();
+    if (settings_.targetPressure != 0)
+    {
+        if (settings_.mode != CellMode::leesEdwards)
+        {
+            throw std::invalid_argument
+            (
+                "targetPressure: pressure control is for a sheared cell (mode leesEdwards"
+                " with a shearRate), not mode " + cellModeName(settings_.mode)
+              + "; 0: volume-controlled"
+            );
+        }
+        if (!(settings_.barostatTime >= 0) || !std::isfinite(settings_.barostatTime))
+        {
+            throw std::invalid_argument
+            (
+                "barostatTime must be >= 0 s (0: automatic), not "
+              + std::to_string(settings_.barostatTime)
+            );
+        }
+        double dMin = species_[0].diameter, dMax = dMin;
+        for (const Species& s : species_)
+        {
+            dMin = std::min(dMin, s.diameter);
+            dMax = std::max(dMax, s.diameter);
+        }
+        // the Barostat refuses a pressure <= 0 (before it is used for the automatic time)
+        const double tau = settings_.barostatTime > 0 || !(settings_.targetPressure > 0)
+            ? settings_.barostatTime
+            : Barostat::automaticRelaxationTime
+              (
+                  law_.normalStiffnessAtForce(settings_.targetPressure*dMax*dMax), dMin,
+                  settings_.targetPressure, dt_
+              );
+        barostat_ = std::make_unique<Barostat>(settings_.targetPressure, tau, dt_);
+        settings_.barostatTime = tau;
+    }
 
     double dMin = species_[0].diameter;
     for (const Species& s : species_) dMin = std::min(dMin, s.diameter);
@@ -207,6 +243,14 @@ std::vector<int> Simulation::speciesCounts() const
 
 void Simulation::addWall(const Wall& wall)
 {
+    if (barostat_)
+    {
+        throw std::invalid_argument
+        (
+            "addWall: a pressure-controlled cell (targetPressure) dilates its gradient"
+            " extent and cannot hold walls"
+        );
+    }
     walls_.add(wall, particles_.size());
     refreshForces();
 }
@@ -256,6 +300,7 @@ SimulationState Simulation::exportState() const
     st.time = time_;
     st.stepCount = stepCount_;
     st.shearOffset = box_.offset;
+    st.boxLengthY = box_.ly;
     st.pairFirst = list_.first();
     st.pairSecond = list_.second();
     st.history = history_;
@@ -307,6 +352,7 @@ void Simulation::importState(const SimulationState& st)
     time_ = st.time;
     stepCount_ = st.stepCount;
     box_.offset = st.shearOffset;
+    if (st.boxLengthY > 0) box_.ly = st.boxLengthY;
     list_.restorePairs(st.pairFirst, st.pairSecond);
     history_ = st.history;
     for (auto* a : {&pfx_, &pfy_, &pfz_, &pcx_, &pcy_, &pcz_}) a->assign(nPairs, 0.0);
@@ -324,6 +370,7 @@ void Simulation::importState(const SimulationState& st)
     walls_.clearHistories(n);
     timeSinceBuild_ = 0;
     radiusGrowthSinceBuild_ = 0;
+    dilationSinceBuild_ = 0;
     // forces F^n come from the checkpoint; the list is rebuilt (histories carried over)
     // at the next force evaluation
     listValid_ = false;
@@ -394,7 +441,8 @@ void Simulation::step()
     // Verlet list: two peculiar displacements plus the streaming across one cutoff)
     nearDrift_ += 2*std::sqrt(maxStep2) + std::abs(box_.shearRate)*dt*(list_.cutoff() + skin_);
     {
-        const double shearDrift = std::abs(box_.shearRate)*timeSinceBuild_*(list_.cutoff() + skin_);
+        const double shearDrift = (std::abs(box_.shearRate)*timeSinceBuild_ + dilationSinceBuild_)
+                                 *(list_.cutoff() + skin_);
         if (2*std::sqrt(maxDisp2) + shearDrift + 2*radiusGrowthSinceBuild_ >= skin_)
         {
             listValid_ = false;
@@ -413,9 +461,39 @@ void Simulation::step()
         driving_->setElasticEnergy(elasticEnergy());
     }
     driving_->afterStep(particles_, nThreads_);
+    if (barostat_ && (stepCount_ + 1) % Barostat::every == 0) applyBarostat();
 
     ++stepCount_;
     if (stepCount_ % 100 == 0) checkEnergy();
+}
+
+void Simulation::applyBarostat()
+{
+    lastBarostatStress_ = totalStress()(1, 1)/box_.volume();
+    dilateGradientExtent(barostat_->dilation(lastBarostatStress_));
+    // a target below what the shear's agitation alone exerts: the cell expands without end
+    const double phi = solidsFraction();
+    if (phi < 0.01)
+    {
+        std::ostringstream msg;
+        msg << "pressure control failed at step " << stepCount_ + 1 << " (t = " << time_
+            << " s): the cell expanded to solids fraction " << phi << " and sigma_yy is still "
+            << lastBarostatStress_ << " Pa against targetPressure "
+            << barostat_->targetPressure() << " Pa; at shearRate " << box_.shearRate
+            << " 1/s the grains' agitation alone exceeds the target (a gas, not a dense"
+            << " flow): raise targetPressure or lower shearRate";
+        throw std::runtime_error(msg.str());
+    }
+}
+
+void Simulation::dilateGradientExtent(double factor)
+{
+    if (factor == 1) return;
+    for (double& y : particles_.y) y *= factor;
+    box_.ly *= factor;
+    const double strain = std::abs(std::log(factor));
+    dilationSinceBuild_ += strain;
+    nearDrift_ += strain*(list_.cutoff() + skin_);
 }
 
 void Simulation::checkEnergy() const

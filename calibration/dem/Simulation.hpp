@@ -18,6 +18,7 @@
 // floating-point atomics, so a run is bitwise reproducible for a given seed; the
 // trajectories do not even depend on the number of threads (computeForces explains how).
 
+#include "Barostat.hpp"
 #include "BlockBalance.hpp"
 #include "CellStatistics.hpp"
 #include "ContactForce.hpp"
@@ -52,6 +53,10 @@ struct SimulationSettings
                                            // the kicks' steering time; 0: 1000 dt)
     std::uint64_t seed = 1;                // the stochastic driving's random numbers
     double shearRate = 0;                  // gammaDot [1/s] for Lees-Edwards
+    //- Pressure control of a Lees-Edwards cell (Barostat.hpp): sigma_yy held at this
+    //  pressure [Pa] by dilating the gradient extent; 0: volume-controlled
+    double targetPressure = 0;
+    double barostatTime = 0;               // tau_p [s]; 0: automatic (Barostat.hpp)
     double maxOverlapFraction = 0.1;       // stop when delta/d_min exceeds this (<= 0: off)
     double energyBlowUpFactor = 1e3;       // stop when E_kin > factor x reference
     bool checkTimeStep = true;             // refuse dt above the recommended maximum
@@ -70,6 +75,7 @@ struct SimulationState
     double time = 0;
     long stepCount = 0;
     double shearOffset = 0;
+    double boxLengthY = 0;                         // ly (pressure control changes it); 0: as built
     std::vector<int> pairFirst, pairSecond;
     std::vector<ContactHistory> history;
     // per-pair force on i and n x F_t of the last evaluation (stress measurements)
@@ -178,6 +184,19 @@ public:
     //- Mass-weighted mean velocity of all particles.
     Eigen::Vector3d meanVelocity() const;
 
+    //- Solids volume over the box's volume.
+    double solidsFraction() const;
+
+    //- The touching pairs now: their number and mean overlap over the pair's mean
+    //  diameter (the coordination number is 2 contacts / N).
+    struct ContactSummary { long contacts = 0; double meanOverlapFraction = 0; };
+    ContactSummary contactSummary() const;
+
+    //- The pressure control (null: volume-controlled cell) and sigma_yy at its last
+    //  update [Pa].
+    const Barostat* barostat() const { return barostat_.get(); }
+    double lastBarostatStress() const { return lastBarostatStress_; }
+
 private:
     //- checkDisplacements: test the list's validity from the displacements (step() has
     //  done that already in its drift loop); halfKick: finish the step with the second
@@ -222,6 +241,11 @@ private:
     void partitionWork();
     bool neighbourListExpired() const;
     void checkEnergy() const;
+    //- The barostat's update: sigma_yy now, the gradient extent dilated (throws when the
+    //  cell has expanded into a dilute gas without reaching the target)
+    void applyBarostat();
+    //- Positions y and ly scaled by factor (affine; velocities kept)
+    void dilateGradientExtent(double factor);
 
     std::vector<Species> species_;
     SimulationSettings settings_;
@@ -286,6 +310,12 @@ private:
 
     double lastMaxOverlapFraction_ = 0;
     double referenceEnergy_ = 0;
+
+    std::unique_ptr<Barostat> barostat_;
+    double lastBarostatStress_ = 0;
+    // sum of |ln s| of the dilations since the list build: a listed pair's distance has
+    // changed by at most that times (cutoff + skin)
+    double dilationSinceBuild_ = 0;
 
     bool collisionsEnabled_ = false;
     CollisionStatistics collisions_;

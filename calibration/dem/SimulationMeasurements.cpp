@@ -198,6 +198,33 @@ Eigen::Matrix3d Simulation::totalStress() const
     return J;
 }
 
+double Simulation::solidsFraction() const
+{
+    double volume = 0;
+    for (double r : particles_.radius) volume += r*r*r;
+    return 4.0/3.0*M_PI*volume/box_.volume();
+}
+
+Simulation::ContactSummary Simulation::contactSummary() const
+{
+    const Particles& p = particles_;
+    ContactSummary summary;
+    double overlapSum = 0;
+    forEachContact
+    (
+        [&](std::size_t, int i, int j, const Eigen::Vector3d& r)
+        {
+            const double contact = p.radius[i] + p.radius[j];
+            const double delta = contact - r.norm();
+            if (delta <= 0) return;
+            ++summary.contacts;
+            overlapSum += delta/contact;
+        }
+    );
+    if (summary.contacts > 0) summary.meanOverlapFraction = overlapSum/summary.contacts;
+    return summary;
+}
+
 void Simulation::enableCollisionStatistics(double eMin, double eMax, int nBins)
 {
     collisions_.reset(int(species_.size()), eMin, eMax, nBins);

@@ -25,7 +25,8 @@ bool Simulation::neighbourListExpired() const
     }
     // relative displacement of any pair: two peculiar displacements plus the relative
     // streaming across at most one cutoff in y
-    const double shearDrift = std::abs(box_.shearRate)*timeSinceBuild_*(list_.cutoff() + skin_);
+    const double shearDrift = (std::abs(box_.shearRate)*timeSinceBuild_ + dilationSinceBuild_)
+                             *(list_.cutoff() + skin_);
     return 2*std::sqrt(max2) + shearDrift + 2*radiusGrowthSinceBuild_ >= skin_;
 }
 
@@ -78,6 +79,7 @@ void Simulation::rebuildNeighbourList()
     uBuildZ_ = particles_.uz;
     timeSinceBuild_ = 0;
     radiusGrowthSinceBuild_ = 0;
+    dilationSinceBuild_ = 0;
     listValid_ = true;
     ++rebuildTimings_.count;
     rebuildTimings_.wallSeconds += wallSeconds() - start;

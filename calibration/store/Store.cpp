@@ -364,6 +364,12 @@ std::string settingsKey(const dem::CellRunSettings& b, const std::string& contac
     {
         key << "; mode " << dem::cellModeName(sim.mode);
     }
+    // pressure control: named only when on, so the keys of volume-controlled stores stand
+    if (sim.targetPressure > 0)
+    {
+        key << "; pressure " << fmt10(sim.targetPressure) << " barostatTime "
+            << fmt10(sim.barostatTime);
+    }
     // a sheared cell's eta: its stress products are correlated about the run's mean
     // (before, raw: such stores' eta grew with the window and are not reused)
     if (sim.mode == dem::CellMode::leesEdwards)

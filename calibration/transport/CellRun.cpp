@@ -12,6 +12,7 @@
 #include <cmath>
 #include <cstdio>
 #include <ctime>
+#include <sstream>
 #include <stdexcept>
 
 #ifdef _OPENMP
@@ -49,6 +50,23 @@ void validateCellRunSettings(const CellRunSettings& s)
     if (s.simulation.mode == CellMode::leesEdwards && !(std::abs(s.simulation.shearRate) > 0))
     {
         throw std::invalid_argument("shearRate must be non-zero for a leesEdwards cell");
+    }
+    const double p = s.simulation.targetPressure;
+    if (!(p >= 0) || !std::isfinite(p))
+    {
+        throw std::invalid_argument
+        (
+            "targetPressure must be a finite pressure > 0 Pa (0: volume-controlled), not "
+          + std::to_string(p)
+        );
+    }
+    if (p > 0 && s.simulation.mode != CellMode::leesEdwards)
+    {
+        throw std::invalid_argument
+        (
+            "targetPressure: pressure control is for a sheared cell (mode leesEdwards), not"
+            " mode " + cellModeName(s.simulation.mode)
+        );
     }
 }
 
@@ -143,30 +161,59 @@ double initialTemperature(const CellRunSettings& settings, double dMean)
 }
 
 //- Windows of equilibrationTime/4; equilibrated when the mean T of two consecutive windows
-//  differs by < 3 % after the minimum time.
+//  differs by < 3 % after the minimum time; under pressure control also their mean solids
+//  fractions by < 0.002 and the last window's sigma_yy lies within 10 % of the target.
 void equilibrate(Simulation& sim, const CellRunSettings& settings, CellRunResult& result)
 {
+    const Barostat* barostat = sim.barostat();
     const double dt = sim.timeStep();
     const double maxTime = settings.maxEquilibrationTime > 0
         ? settings.maxEquilibrationTime : 5*settings.equilibrationTime;
     const long window = std::max(1L, std::lround(0.25*settings.equilibrationTime/dt));
-    double previous = -1;
+    double previous = -1, previousPhi = -1;
     double elapsed = 0;
     while (elapsed < maxTime || previous < 0)
     {
-        double sumT = 0;
+        double sumT = 0, sumPhi = 0, sumStress = 0;
         long n = 0;
-        sim.run(window, [&](const Simulation& x) { sumT += x.temperature(); ++n; },
-                std::max(1L, window/50), settings.progressEvery, settings.label + " equilibration");
+        sim.run
+        (
+            window,
+            [&](const Simulation& x)
+            {
+                sumT += x.temperature();
+                if (barostat)
+                {
+                    sumPhi += x.solidsFraction();
+                    sumStress += x.lastBarostatStress();
+                }
+                ++n;
+            },
+            std::max(1L, window/50), settings.progressEvery, settings.label + " equilibration"
+        );
         elapsed += window*dt;
         const double meanT = n ? sumT/n : sim.temperature();
+        const double meanPhi = n ? sumPhi/n : sim.solidsFraction();
+        const bool pressureHeld = !barostat
+         || (previousPhi > 0 && std::abs(meanPhi - previousPhi) < 0.002
+          && n > 0 && std::abs(sumStress/n/barostat->targetPressure() - 1) < 0.1);
+        if (barostat && settings.progressEvery > 0)
+        {
+            std::printf
+            (
+                "%s equilibration: t %.4g s, phi %.4f, sigma_yy %.4g Pa (target %.4g Pa)\n",
+                settings.label.c_str(), elapsed, meanPhi, n ? sumStress/n : 0.0,
+                barostat->targetPressure()
+            );
+        }
         if (elapsed >= settings.equilibrationTime && previous > 0
-         && std::abs(meanT - previous) < 0.03*meanT)
+         && std::abs(meanT - previous) < 0.03*meanT && pressureHeld)
         {
             result.equilibrated = true;
             break;
         }
         previous = meanT;
+        previousPhi = meanPhi;
         if (settings.equilibrationTime == 0) { result.equilibrated = true; break; }
     }
     result.equilibrationTime = elapsed;
@@ -194,6 +241,10 @@ Measurements makeMeasurements
         m.push_back(std::make_unique<MeanSquareDisplacementMeasurement>(members, plan, settings.maxMsdFrames));
         m.push_back(std::make_unique<StressAutocorrelation>(species, sim.box().volume(), plan));
         m.push_back(std::make_unique<CollectiveMotionMeasurement>(plan.blocks));
+        if (settings.simulation.mode == CellMode::leesEdwards)
+        {
+            m.push_back(std::make_unique<RheologyMeasurement>(plan.blocks));
+        }
     }
     m.push_back(std::make_unique<CollisionMeasurement>(sim, energyScale));
     return m;
@@ -442,6 +493,25 @@ CellRunResult runCell(const CellRunSettings& settings)
         result.species.push_back(st);
     }
     if (!sample(settings, sim, measurements, plan, result)) result.species.clear();
+    RheologyResult& rheology = result.rheology;
+    if (const Barostat* barostat = sim.barostat(); barostat && rheology.measured)
+    {
+        rheology.barostatTime = barostat->relaxationTime();
+        // a pressure the barostat did not hold is not the condition asked for
+        const correlation::Estimate& p = rheology.pressure;
+        const double target = barostat->targetPressure();
+        if (std::abs(p.value - target) > std::max(3*p.standardError, 0.05*target))
+        {
+            std::ostringstream msg;
+            msg << settings.label << ": the barostat did not hold targetPressure " << target
+                << " Pa: sigma_yy reached " << p.value << " +- " << p.standardError
+                << " Pa at solids fraction " << rheology.solidsFraction.value
+                << " (barostatTime " << barostat->relaxationTime() << " s, equilibrated: "
+                << (result.equilibrated ? "yes" : "no") << "); lengthen equilibrationTime"
+                << " or samplingTime, or shorten barostatTime";
+            throw std::runtime_error(msg.str());
+        }
+    }
     return result;
 }
 

@@ -107,6 +107,37 @@ struct SpeciesTransport
     correlation::DiffusiveRegimeCheck diffusiveRegime;
 };
 
+//- The cell's rheology (sheared cells): block means of the stresses, the solids fraction
+//  and the contacts; mu and I per block from the block's means, errors from the blocks.
+struct RheologyResult
+{
+    bool measured = false;
+    bool pressureControlled = false;
+    double targetPressure = 0;             // [Pa] (pressure-controlled)
+    double barostatTime = 0;               // tau_p [s] (pressure-controlled)
+    double meanDiameter = 0;               // d of I: solids-volume weighted mean [m]
+    double solidsDensity = 0;              // rho_s of I: solids-volume weighted [kg/m3]
+    correlation::Estimate pressure;        // sigma_yy [Pa] (kinetic + contact, compressive > 0)
+    correlation::Estimate shearStress;     // |sigma_xy| [Pa]
+    correlation::Estimate stressRatio;     // mu = |sigma_xy|/sigma_yy
+    correlation::Estimate inertialNumber;  // I = |gammaDot| d/sqrt(sigma_yy/rho_s)
+    correlation::Estimate solidsFraction;  // phi
+    correlation::Estimate coordinationNumber;      // Z = 2 contacts/N
+    correlation::Estimate meanOverlapFraction;     // <delta/(R_i + R_j)> over the contacts
+    //- Steady: the first and second halves of the blocks agree in phi and mu within 3
+    //  combined standard errors; steadyCheck says by how much
+    bool steady = false;
+    std::string steadyCheck;
+    //- "dense flow", "jammed" (I below minimumInertialNumber: quasi-static, no inertial
+    //  rheology to measure) or "gas" (I above maximumInertialNumber or Z below 1: outside
+    //  the dense regime); regimeReason: the figures that decided
+    std::string regime;
+    std::string regimeReason;
+    static constexpr double minimumInertialNumber = 1e-4;
+    static constexpr double maximumInertialNumber = 1.0;
+    bool denseSteadyFlow() const { return measured && steady && regime == "dense flow"; }
+};
+
 struct CellRunResult
 {
     CellRunSettings settings;
@@ -134,6 +165,7 @@ struct CellRunResult
     //  components; block mean and error (Measurements.hpp CollectiveMotionMeasurement)
     correlation::Estimate collectiveMotionTransverse;
     correlation::Estimate collectiveMotionLongitudinal;
+    RheologyResult rheology;
     std::vector<int> speciesCounts;
     bool interrupted = false;              // stopped by stopAfterSteps: results incomplete
     bool resumed = false;                  // continued from a checkpoint

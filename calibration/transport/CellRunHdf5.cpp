@@ -116,6 +116,35 @@ void writeRun(const io::Group& run, const CellRunResult& r)
     run.setAttribute("equilibrationTime", r.equilibrationTime);
 }
 
+//- results/rheology (sheared cells): the RheologyResult as attributes, each estimate with
+//  its block standard error (<name>Error)
+void writeRheology(const io::Group& res, const RheologyResult& h)
+{
+    if (!h.measured) return;
+    const io::Group g = res.createGroup("rheology");
+    g.setAttribute("pressureControlled", std::int64_t(h.pressureControlled ? 1 : 0));
+    g.setAttribute("targetPressure", h.targetPressure);
+    g.setAttribute("barostatTime", h.barostatTime);
+    g.setAttribute("meanDiameter", h.meanDiameter);
+    g.setAttribute("solidsDensity", h.solidsDensity);
+    const std::pair<const char*, const correlation::Estimate*> estimates[] =
+    {
+        {"pressure", &h.pressure}, {"shearStress", &h.shearStress},
+        {"stressRatio", &h.stressRatio}, {"inertialNumber", &h.inertialNumber},
+        {"solidsFraction", &h.solidsFraction}, {"coordinationNumber", &h.coordinationNumber},
+        {"meanOverlapFraction", &h.meanOverlapFraction}
+    };
+    for (const auto& [name, e] : estimates)
+    {
+        g.setAttribute(name, e->value);
+        g.setAttribute(std::string(name) + "Error", e->standardError);
+    }
+    g.setAttribute("steady", std::int64_t(h.steady ? 1 : 0));
+    g.setAttribute("steadyCheck", h.steadyCheck);
+    g.setAttribute("regime", h.regime);
+    g.setAttribute("regimeReason", h.regimeReason);
+}
+
 //- results: the temperature and the diffusion measurements per species (velocity
 //  autocorrelation, mean-square displacement)
 void writeSpeciesResults(const io::Group& res, const CellRunResult& r)
@@ -243,6 +272,7 @@ void writeCellRun(const CellRunResult& r, const std::string& path)
     writeRun(root.createGroup("run"), r);
     const io::Group results = root.createGroup("results");
     writeSpeciesResults(results, r);
+    writeRheology(results, r.rheology);
     writeStress(results.createGroup("stress"), r);
     writeCollisions(results.createGroup("collisions"), r);
     file.commit();

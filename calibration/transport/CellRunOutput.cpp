@@ -63,6 +63,29 @@ std::string summary(const CellRunResult& r)
         out << "  gammaDot = " << s.simulation.shearRate << " 1/s, Savage-Jeffrey R = "
             << r.savageJeffreyR << "\n";
     }
+    if (const RheologyResult& h = r.rheology; h.measured)
+    {
+        const auto pm = [&](const correlation::Estimate& e)
+        {
+            std::ostringstream t;
+            t << e.value << " +- " << e.standardError;
+            return t.str();
+        };
+        out << "  rheology (" << (h.pressureControlled ? "pressure" : "volume")
+            << "-controlled";
+        if (h.pressureControlled)
+        {
+            out << ", targetPressure " << h.targetPressure << " Pa, barostatTime "
+                << h.barostatTime << " s";
+        }
+        out << "): sigma_yy = " << pm(h.pressure) << " Pa, mu = " << pm(h.stressRatio)
+            << ", I = " << pm(h.inertialNumber) << " (d " << h.meanDiameter << " m, rho_s "
+            << h.solidsDensity << " kg/m3), phi = " << pm(h.solidsFraction) << ", Z = "
+            << pm(h.coordinationNumber) << ", mean overlap " << 100*h.meanOverlapFraction.value
+            << " % of d\n";
+        out << "    steady: " << (h.steady ? "yes" : "NO") << " (" << h.steadyCheck
+            << "); regime: " << h.regime << " (" << h.regimeReason << ")\n";
+    }
     if (r.collectiveMotionTransverse.samples > 0)
     {
         out << "  longest-wavelength momentum modes / equipartition: transverse "

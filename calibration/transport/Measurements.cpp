@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <sstream>
 #include <stdexcept>
 
 namespace sdf::dem
@@ -150,6 +151,141 @@ void TemperatureMeasurement::finish(CellRunResult& result, long) const
                 correlation::blockAverage(species_[s], blocks_).standardError;
         }
     }
+}
+
+// ---------------------------------------------------------------- rheology
+
+RheologyMeasurement::RheologyMeasurement(int blocks)
+:
+    blocks_(blocks)
+{}
+
+void RheologyMeasurement::sample(const Simulation& x, long)
+{
+    const Eigen::Matrix3d J = x.totalStress();
+    const double volume = x.box().volume();
+    const Simulation::ContactSummary contacts = x.contactSummary();
+    normal_.push_back(J(1, 1)/volume);
+    shear_.push_back(J(0, 1)/volume);
+    phi_.push_back(x.solidsFraction());
+    coordination_.push_back(2.0*double(contacts.contacts)/double(x.particles().size()));
+    overlap_.push_back(contacts.meanOverlapFraction);
+}
+
+void RheologyMeasurement::save(io::Checkpoint& c) const
+{
+    c.vectors["cellRun_rheologyNormal"] = normal_;
+    c.vectors["cellRun_rheologyShear"] = shear_;
+    c.vectors["cellRun_rheologyPhi"] = phi_;
+    c.vectors["cellRun_rheologyCoordination"] = coordination_;
+    c.vectors["cellRun_rheologyOverlap"] = overlap_;
+}
+
+void RheologyMeasurement::load(const io::Checkpoint& c, const std::string& f)
+{
+    normal_ = entry(c.vectors, "cellRun_rheologyNormal", f);
+    shear_ = entry(c.vectors, "cellRun_rheologyShear", f);
+    phi_ = entry(c.vectors, "cellRun_rheologyPhi", f);
+    coordination_ = entry(c.vectors, "cellRun_rheologyCoordination", f);
+    overlap_ = entry(c.vectors, "cellRun_rheologyOverlap", f);
+}
+
+void RheologyMeasurement::finish(CellRunResult& result, long) const
+{
+    RheologyResult& r = result.rheology;
+    const CellRunSettings& settings = result.settings;
+    r.measured = true;
+    r.pressureControlled = settings.simulation.targetPressure > 0;
+    r.targetPressure = settings.simulation.targetPressure;
+    r.meanDiameter = result.meanDiameter;
+    double rho = 0, weights = 0;
+    for (std::size_t s = 0; s < settings.species.size(); ++s)
+    {
+        rho += settings.volumeFractions[s]*settings.species[s].density;
+        weights += settings.volumeFractions[s];
+    }
+    r.solidsDensity = rho/weights;
+    const double gammaDot = std::abs(settings.simulation.shearRate);
+
+    // per block: the means, and mu and I from them (ratios of means, not means of ratios)
+    struct Block { double p, tau, mu, I, phi, Z, overlap; };
+    const auto mean = [](const std::vector<double>& v, std::size_t b, std::size_t e)
+    {
+        double sum = 0;
+        for (std::size_t k = b; k < e; ++k) sum += v[k];
+        return e > b ? sum/double(e - b) : 0.0;
+    };
+    const std::vector<Block> blocks = correlation::forEachBlock
+    (
+        normal_.size(), std::size_t(blocks_),
+        [&](std::size_t b, std::size_t e)
+        {
+            Block k;
+            k.p = mean(normal_, b, e);
+            k.tau = std::abs(mean(shear_, b, e));
+            k.mu = k.p > 0 ? k.tau/k.p : 0.0;
+            k.I = k.p > 0 ? gammaDot*r.meanDiameter/std::sqrt(k.p/r.solidsDensity) : 0.0;
+            k.phi = mean(phi_, b, e);
+            k.Z = mean(coordination_, b, e);
+            k.overlap = mean(overlap_, b, e);
+            return k;
+        }
+    );
+    const auto estimate = [&](double Block::*field, std::size_t from, std::size_t to)
+    {
+        std::vector<double> values;
+        for (std::size_t b = from; b < to; ++b) values.push_back(blocks[b].*field);
+        return correlation::meanAndStandardError(values);
+    };
+    const std::size_t nb = blocks.size();
+    r.pressure = estimate(&Block::p, 0, nb);
+    r.shearStress = estimate(&Block::tau, 0, nb);
+    r.stressRatio = estimate(&Block::mu, 0, nb);
+    r.inertialNumber = estimate(&Block::I, 0, nb);
+    r.solidsFraction = estimate(&Block::phi, 0, nb);
+    r.coordinationNumber = estimate(&Block::Z, 0, nb);
+    r.meanOverlapFraction = estimate(&Block::overlap, 0, nb);
+
+    // steady: the halves of the sampling agree (a drift of phi or mu shows as a difference)
+    std::ostringstream check;
+    r.steady = nb >= 4;
+    if (nb < 4) check << "needs blocks >= 4 (2 per half), has " << nb;
+    for (const auto& [name, field] :
+         {std::pair{"phi", &Block::phi}, std::pair{"mu", &Block::mu}})
+    {
+        if (nb < 4) break;
+        const correlation::Estimate first = estimate(field, 0, nb/2);
+        const correlation::Estimate second = estimate(field, nb - nb/2, nb);
+        const double combined = std::hypot(first.standardError, second.standardError);
+        const double difference = second.value - first.value;
+        const double sigmas = combined > 0 ? std::abs(difference)/combined
+                                           : (difference == 0 ? 0.0 : HUGE_VAL);
+        if (sigmas > 3) r.steady = false;
+        check << (name == std::string("phi") ? "" : "; ") << name << " second half - first "
+              << difference << " (" << sigmas << " combined standard errors)";
+    }
+    r.steadyCheck = check.str();
+
+    const double I = r.inertialNumber.value, Z = r.coordinationNumber.value;
+    std::ostringstream why;
+    if (I < RheologyResult::minimumInertialNumber)
+    {
+        r.regime = "jammed";
+        why << "I = " << I << " < " << RheologyResult::minimumInertialNumber
+            << ": quasi-static, no inertial rheology to measure";
+    }
+    else if (I > RheologyResult::maximumInertialNumber || Z < 1)
+    {
+        r.regime = "gas";
+        why << "I = " << I << ", Z = " << Z << ": outside the dense regime (I <= "
+            << RheologyResult::maximumInertialNumber << " and Z >= 1)";
+    }
+    else
+    {
+        r.regime = "dense flow";
+        why << "I = " << I << ", Z = " << Z;
+    }
+    r.regimeReason = why.str();
 }
 
 // ---------------------------------------------------------------- velocity autocorrelation

@@ -36,6 +36,23 @@ private:
     std::vector<std::vector<double>> species_;
 };
 
+//- The rheology of a sheared cell (RheologyResult): per sample sigma_yy, sigma_xy, the
+//  solids fraction, the contacts and their mean overlap.
+class RheologyMeasurement : public Measurement
+{
+public:
+    explicit RheologyMeasurement(int blocks);
+    void sample(const Simulation& simulation, long index) override;
+    void save(io::Checkpoint& checkpoint) const override;
+    void load(const io::Checkpoint& checkpoint, const std::string& source) override;
+    void finish(CellRunResult& result, long samples) const override;
+
+private:
+    int blocks_;
+    // per sample: sigma_yy, sigma_xy [Pa], phi, Z, mean overlap fraction
+    std::vector<double> normal_, shear_, phi_, coordination_, overlap_;
+};
+
 //- Samples between the MSD's position frames (at most maxFrames per run), its longest
 //  lag in frames (half a block of them) and in seconds. The Green-Kubo D is read within
 //  the same lags.

@@ -48,6 +48,7 @@ void addSimulationState(io::Checkpoint& out, const Simulation& simulation)
     io::Checkpoint c;
     c.scalars["time"] = st.time;
     c.scalars["shearOffset"] = st.shearOffset;
+    c.scalars["boxLengthY"] = st.boxLengthY;
     c.integers["stepCount"] = st.stepCount;
     c.strings["format"] = "sdf_dem SimulationState 1";
     for (std::size_t a = 0; a < particleArrays().size(); ++a)
@@ -142,6 +143,8 @@ void loadSimulationState(const io::Checkpoint& c, Simulation& simulation, const 
     if (c.vectors.count("driving_state")) st.driving = vec("driving_state");
     st.time = c.scalars.at("time");
     st.shearOffset = c.scalars.at("shearOffset");
+    // absent in checkpoints written before pressure control: ly as built
+    if (c.scalars.count("boxLengthY")) st.boxLengthY = c.scalars.at("boxLengthY");
     st.stepCount = long(c.integers.at("stepCount"));
     simulation.importState(st);
 }

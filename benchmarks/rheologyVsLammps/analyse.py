@@ -1,0 +1,93 @@
+#!/usr/bin/env python3
+"""Reads benchmarks/rheologyVsLammps/run's cells and prints the comparison table.
+
+Ours: the rheology line of periodicDEM-cli's summary (block means over 8 blocks).
+LAMMPS: segments.txt (segment means of sigma_yy, sigma_xy, phi, Z every nb steps over the
+production), cut into 8 blocks; mu and I per block from the block's means, as ours.
+Agreement: |ours - LAMMPS| against 2 combined standard errors, per seed and for the
+seed means (whose error is the larger of the seeds' spread and their block errors).
+"""
+import math, os, re, statistics, sys
+
+out, inertial, seeds = sys.argv[1], sys.argv[2].split(), sys.argv[3].split()
+rho, d = 2500.0, 0.0015
+NUM = r"([0-9.eE+-]+)"
+
+def ours(path):
+    text = open(path).read()
+    m = re.search(r"sigma_yy = %s \+- %s Pa, mu = %s \+- %s, I = %s \+- %s .*?phi = %s \+- %s, "
+                  r"Z = %s \+- %s" % ((NUM,)*10), text)
+    if not m:
+        raise SystemExit(f"{path}: no rheology line")
+    v = list(map(float, m.groups()))
+    steady = re.search(r"steady: (yes|NO)", text).group(1)
+    return {"p": (v[0], v[1]), "mu": (v[2], v[3]), "I": (v[4], v[5]), "phi": (v[6], v[7]),
+            "Z": (v[8], v[9]), "steady": steady}
+
+def lammps(path, gd):
+    rows = [list(map(float, l.split())) for l in open(path) if l.strip() and not l.startswith("#")]
+    n = len(rows) // 8
+    blocks = []
+    for b in range(8):
+        part = rows[b*n:(b + 1)*n]
+        p = statistics.fmean(r[1] for r in part)
+        tau = abs(statistics.fmean(r[2] for r in part))
+        blocks.append({"p": p, "mu": tau/p, "I": gd*d/math.sqrt(p/rho),
+                       "phi": statistics.fmean(r[3] for r in part),
+                       "Z": statistics.fmean(r[4] for r in part)})
+    est = {}
+    for k in blocks[0]:
+        vals = [b[k] for b in blocks]
+        est[k] = (statistics.fmean(vals), statistics.stdev(vals)/math.sqrt(len(vals)))
+    return est
+
+def combine(estimates):
+    """Mean of the seeds; error: the larger of their spread's and their block errors'."""
+    vals = [e[0] for e in estimates]
+    spread = statistics.stdev(vals)/math.sqrt(len(vals)) if len(vals) > 1 else 0.0
+    blockErr = math.sqrt(sum(e[1]**2 for e in estimates))/len(estimates)
+    return statistics.fmean(vals), max(spread, blockErr), spread
+
+print("Pressure-controlled sheared cell: ours (periodicDEM-cli) against LAMMPS, same cells")
+print("columns: quantity, ours +- block error, LAMMPS +- block error, difference / combined"
+      " standard error")
+worst = 0.0
+for I in inertial:
+    gd = float(I)*math.sqrt(1333/rho)/d
+    o, l = {}, {}
+    for seed in seeds:
+        tag = f"I{I}-seed{seed}"
+        o[seed] = ours(os.path.join(out, tag, "ours.log"))
+        l[seed] = lammps(os.path.join(out, tag, "segments.txt"), gd)
+        print(f"\nI target {I}, seed {seed} (ours steady: {o[seed]['steady']}):")
+        for k in ("p", "mu", "phi", "I", "Z"):
+            a, b = o[seed][k], l[seed][k]
+            sigma = math.hypot(a[1], b[1])
+            z = abs(a[0] - b[0])/sigma if sigma > 0 else float("inf")
+            print(f"  {k:4s} {a[0]:.5g} +- {a[1]:.2g}   {b[0]:.5g} +- {b[1]:.2g}   {z:.2f}")
+    print(f"I target {I}, seeds combined (the error: max of the seeds' spread and block errors):")
+    for k in ("mu", "phi"):
+        a = combine([o[s][k] for s in seeds])
+        b = combine([l[s][k] for s in seeds])
+        sigma = math.hypot(a[1], b[1])
+        z = abs(a[0] - b[0])/sigma
+        worst = max(worst, z)
+        print(f"  {k:4s} ours {a[0]:.5g} +- {a[1]:.2g} (seed spread {a[2]:.2g})   LAMMPS "
+              f"{b[0]:.5g} +- {b[1]:.2g} (seed spread {b[2]:.2g})   {z:.2f} combined s.e."
+              f"  {'within 2' if z <= 2 else 'OUTSIDE 2'}")
+print(f"\nlargest difference of the seed means (mu, phi over all I): {worst:.2f} combined s.e.")
+
+tp = os.path.join(out, "throughput")
+if os.path.isdir(tp):
+    text = open(os.path.join(tp, "ours.log")).read()
+    oursRate = float(re.search(r"throughput %s particle-steps/s" % NUM, text).group(1))
+    log = open(os.path.join(tp, "lammps.log")).read()
+    loops = [(float(t), int(s), int(a)) for t, s, a in re.findall(
+        r"Loop time of %s on \d+ procs for (\d+) steps with (\d+) atoms" % NUM, log)]
+    steps = sum(s for _, s, _ in loops)
+    seconds = sum(t for t, _, _ in loops)
+    atoms = loops[0][2]
+    lammpsRate = steps*atoms/seconds
+    print(f"\nthroughput at I 0.2, one core: ours {oursRate:.4g} particle-steps/s, LAMMPS "
+          f"{lammpsRate:.4g} (sum of its loop times over {len(loops)} segments: its runs' "
+          f"set-ups between the barostat's segments excluded) -> ratio {oursRate/lammpsRate:.2f}")
