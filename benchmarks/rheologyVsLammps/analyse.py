@@ -10,6 +10,7 @@ seed means (whose error is the larger of the seeds' spread and their block error
 import math, os, re, statistics, sys
 
 out, inertial, seeds = sys.argv[1], sys.argv[2].split(), sys.argv[3].split()
+rollings = sys.argv[4].split() if len(sys.argv) > 4 else ["0"]
 rho, d = 2500.0, 0.0015
 NUM = r"([0-9.eE+-]+)"
 
@@ -52,30 +53,40 @@ print("Pressure-controlled sheared cell: ours (periodicDEM-cli) against LAMMPS, 
 print("columns: quantity, ours +- block error, LAMMPS +- block error, difference / combined"
       " standard error")
 worst = 0.0
-for I in inertial:
+table = []
+for I, muR in [(I, m) for m in rollings for I in inertial]:
     gd = float(I)*math.sqrt(1333/rho)/d
     o, l = {}, {}
     for seed in seeds:
-        tag = f"I{I}-seed{seed}"
+        tag = f"I{I}-seed{seed}-muR{muR}"
         o[seed] = ours(os.path.join(out, tag, "ours.log"))
         l[seed] = lammps(os.path.join(out, tag, "segments.txt"), gd)
-        print(f"\nI target {I}, seed {seed} (ours steady: {o[seed]['steady']}):")
+        print(f"\nI target {I}, mu_r {muR}, seed {seed} (ours steady: {o[seed]['steady']}):")
         for k in ("p", "mu", "phi", "I", "Z"):
             a, b = o[seed][k], l[seed][k]
             sigma = math.hypot(a[1], b[1])
             z = abs(a[0] - b[0])/sigma if sigma > 0 else float("inf")
             print(f"  {k:4s} {a[0]:.5g} +- {a[1]:.2g}   {b[0]:.5g} +- {b[1]:.2g}   {z:.2f}")
-    print(f"I target {I}, seeds combined (the error: max of the seeds' spread and block errors):")
+    print(f"I target {I}, mu_r {muR}, seeds combined (the error: max of the seeds' spread and"
+          " block errors):")
+    row = [I, muR]
     for k in ("mu", "phi"):
         a = combine([o[s][k] for s in seeds])
         b = combine([l[s][k] for s in seeds])
         sigma = math.hypot(a[1], b[1])
         z = abs(a[0] - b[0])/sigma
         worst = max(worst, z)
+        row += [a, b, z]
         print(f"  {k:4s} ours {a[0]:.5g} +- {a[1]:.2g} (seed spread {a[2]:.2g})   LAMMPS "
               f"{b[0]:.5g} +- {b[1]:.2g} (seed spread {b[2]:.2g})   {z:.2f} combined s.e."
               f"  {'within 2' if z <= 2 else 'OUTSIDE 2'}")
-print(f"\nlargest difference of the seed means (mu, phi over all I): {worst:.2f} combined s.e.")
+    table.append(row)
+print("\nsummary (seed means): I, mu_r | mu ours, LAMMPS, sigmas | phi ours, LAMMPS, sigmas")
+for I, muR, mo, ml, mz, po, pl, pz in table:
+    print(f"  {I:6s} {muR:4s} | {mo[0]:.4f}+-{mo[1]:.4f} {ml[0]:.4f}+-{ml[1]:.4f} {mz:.2f}"
+          f" | {po[0]:.4f}+-{po[1]:.4f} {pl[0]:.4f}+-{pl[1]:.4f} {pz:.2f}")
+print(f"\nlargest difference of the seed means (mu, phi over all I and mu_r): {worst:.2f}"
+      " combined s.e.")
 
 tp = os.path.join(out, "throughput")
 if os.path.isdir(tp):

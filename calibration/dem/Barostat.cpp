@@ -37,7 +37,7 @@ double Barostat::automaticRelaxationTime
     double contactStiffness, double dMin, double targetPressure, double timeStep
 )
 {
-    return 20.0*every*timeStep*contactStiffness/(targetPressure*dMin);
+    return 5.0*every*timeStep*contactStiffness/(targetPressure*dMin);
 }
 
 double Barostat::dilation(double sigmaYY) const

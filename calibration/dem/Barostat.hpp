@@ -12,9 +12,11 @@
 //     ln(ly_new/ly) = (every dt / tau_p) (sigma_yy/p - 1),  clamped to +-maxStrainPerUpdate.
 // The relative pressure error drives the strain rate, so a loose start (sigma_yy ~ 0)
 // compresses at 1/tau_p whatever the stiffness. In a dense packing sigma_yy responds to
-// strain with a modulus of about k/d (k the contact stiffness): the loop gain per update
-// is then every dt k/(p d tau_p), and the automatic tau_p makes it 1/20 (stable, no
-// overshoot); a denser answer costs nothing but slower relaxation at high I.
+// strain with a modulus of at most about k/d (k the contact stiffness): the loop gain per
+// update is then every dt k/(p d tau_p), and the automatic tau_p makes it 1/5 (stable, no
+// overshoot). In inertial flow the modulus is far below k/d (sigma_yy ~ (phi_c - phi)^-2,
+// d ln sigma/d ln phi ~ 40 at I 0.3 against k/(p d) ~ 1000), so the density relaxes over
+// a fraction of a strain there; 1/20 made that several strains, longer than the blocks.
 
 namespace sdf::dem
 {
@@ -32,7 +34,7 @@ public:
     //- targetPressure > 0 [Pa]; relaxationTime tau_p > 0 [s]; timeStep dt [s]
     Barostat(double targetPressure, double relaxationTime, double timeStep);
 
-    //- tau_p giving a loop gain of 1/20 in a dense packing: 20 every dt k/(p dMin), with k
+    //- tau_p giving a loop gain of 1/5 in a dense packing: 5 every dt k/(p dMin), with k
     //  the stiffest pair's normal contact stiffness at the contact force p d^2
     static double automaticRelaxationTime
     (

@@ -21,6 +21,7 @@ struct ContactHistory
 {
     double ft[3] = {0, 0, 0};      // elastic tangential force on particle i (lab frame)
     double n[3] = {0, 0, 0};       // contact normal at the last evaluation (j -> i)
+    double xr[3] = {0, 0, 0};      // rolling displacement (rolling resistance; lab frame)
     bool touching = false;
 };
 
@@ -39,6 +40,12 @@ struct ContactResult
 {
     double force[3] = {0, 0, 0};     // force on i
     double nCrossFt[3] = {0, 0, 0};  // n x F_t: torque on i = -R_i nCrossFt, on j = -R_j nCrossFt
+    //- What i's and j's torque sums take (the torque is -R times the sum): n x F_t, and
+    //  with rolling resistance -/+ R* (n x F_r)/R_i,j (rolling torque R* n x F_r on i,
+    //  the opposite on j); equal to nCrossFt without it
+    double torqueSumI[3] = {0, 0, 0};
+    double torqueSumJ[3] = {0, 0, 0};
+    double rollingTorque[3] = {0, 0, 0};   // R* n x F_r: rolling torque on i (walls)
     double overlap = 0;              // delta (<= 0: no contact)
     double normalVelocity = 0;       // v_n (sync), negative when approaching
     bool newContact = false;
@@ -101,6 +108,7 @@ SDF_DEM_ALWAYS_INLINE ContactResult evaluateContact
     {
         h.touching = false;
         h.ft[0] = h.ft[1] = h.ft[2] = 0;
+        h.xr[0] = h.xr[1] = h.xr[2] = 0;
         out.overlap = contactDist - std::sqrt(dist2);
         return out;
     }
@@ -112,6 +120,7 @@ SDF_DEM_ALWAYS_INLINE ContactResult evaluateContact
     if (out.newContact)
     {
         h.ft[0] = h.ft[1] = h.ft[2] = 0;
+        h.xr[0] = h.xr[1] = h.xr[2] = 0;
         h.n[0] = n[0]; h.n[1] = n[1]; h.n[2] = n[2];
     }
 
@@ -179,6 +188,53 @@ SDF_DEM_ALWAYS_INLINE ContactResult evaluateContact
     out.force[1] = fn*n[1] + ftot[1];
     out.force[2] = fn*n[2] + ftot[2];
     cross3(n, ftot, out.nCrossFt);
+    for (int d = 0; d < 3; ++d) out.torqueSumI[d] = out.torqueSumJ[d] = out.nCrossFt[d];
+
+    // 4. rolling resistance (LAMMPS `rolling sds`): rolling velocity
+    //    v_r = R* (w_i - w_j) x n (Wang et al. 2015, eq. 31, as LAMMPS), its displacement
+    //    advanced on the half-step plane with the half-step spins and rotated onto the
+    //    full-step plane as the tangential history; F_r = -k_r xi_r - gamma_r v_r (synchronised
+    //    spins), capped at mu_r |F_n| (on slip the spring is reset to the cap, as LAMMPS);
+    //    torque R* n x F_r on i, the opposite on j (no force)
+    if (c.rollingFriction > 0)
+    {
+        const double rs = c.effectiveRadius;
+        const double dwh[3] = {k.wHalfI[0] - k.wHalfJ[0], k.wHalfI[1] - k.wHalfJ[1], k.wHalfI[2] - k.wHalfJ[2]};
+        double vrh[3];
+        cross3(dwh, nh, vrh);
+        rotateOntoPlane(h.xr, nh);
+        h.xr[0] += rs*vrh[0]*dt;
+        h.xr[1] += rs*vrh[1]*dt;
+        h.xr[2] += rs*vrh[2]*dt;
+        rotateOntoPlane(h.xr, n);
+        const double dws[3] = {k.wSyncI[0] - k.wSyncJ[0], k.wSyncI[1] - k.wSyncJ[1], k.wSyncI[2] - k.wSyncJ[2]};
+        double vr[3];
+        cross3(dws, n, vr);
+        vr[0] *= rs; vr[1] *= rs; vr[2] *= rs;
+        const double kr = c.rollingStiffness, gr = c.rollingDamping;
+        double fr[3] = {-kr*h.xr[0] - gr*vr[0], -kr*h.xr[1] - gr*vr[1], -kr*h.xr[2] - gr*vr[2]};
+        const double limit = c.rollingFriction*std::abs(fn);
+        const double mag2 = dot3(fr, fr);
+        if (mag2 > limit*limit)
+        {
+            const double s = mag2 > 0 ? limit/std::sqrt(mag2) : 0.0;
+            fr[0] *= s; fr[1] *= s; fr[2] *= s;
+            h.xr[0] = -(fr[0] + gr*vr[0])/kr;
+            h.xr[1] = -(fr[1] + gr*vr[1])/kr;
+            h.xr[2] = -(fr[2] + gr*vr[2])/kr;
+        }
+        double nxfr[3];
+        cross3(n, fr, nxfr);
+        // torque on i = -R_i torqueSumI: rolling torque R* n x F_r enters as -R* nxfr/R_i
+        const double si = k.radiusI > 0 ? rs/k.radiusI : 0.0;
+        const double sj = k.radiusJ > 0 ? rs/k.radiusJ : 0.0;
+        for (int d = 0; d < 3; ++d)
+        {
+            out.rollingTorque[d] = rs*nxfr[d];
+            out.torqueSumI[d] -= si*nxfr[d];
+            out.torqueSumJ[d] += sj*nxfr[d];
+        }
+    }
     out.overlap = delta;
     out.normalVelocity = vn;
     return out;

@@ -43,6 +43,7 @@ std::string pairContactText(const PairContactSettings& p)
     add("e", p.restitution);
     add("mu", p.friction);
     add("kn", p.normalStiffness);
+    add("mu_r", p.rollingFriction);
     return text;
 }
 
@@ -55,9 +56,18 @@ void validateConstants
     const std::string& where,
     double restitution,
     double friction,
-    const std::optional<double>& normalStiffness
+    const std::optional<double>& normalStiffness,
+    double rollingFriction
 )
 {
+    if (!(rollingFriction >= 0.0) || !std::isfinite(rollingFriction))
+    {
+        throw std::invalid_argument
+        (
+            where + "rollingFriction must be >= 0 (0: no rolling resistance; got "
+          + std::to_string(rollingFriction) + ")"
+        );
+    }
     if (!(restitution > 0.0 && restitution <= 1.0))
     {
         throw std::invalid_argument
@@ -86,8 +96,31 @@ void validateContactSettings(const ContactSettings& s)
     validateConstants
     (
         "", s.restitution, s.friction,
-        linear ? std::optional<double>(s.normalStiffness) : std::nullopt
+        linear ? std::optional<double>(s.normalStiffness) : std::nullopt,
+        s.rollingFriction
     );
+    for (const auto& [name, value] :
+         {std::pair{"rollingStiffness", s.rollingStiffness}, std::pair{"rollingDamping", s.rollingDamping}})
+    {
+        if (!(value >= 0) || !std::isfinite(value))
+        {
+            throw std::invalid_argument
+            (
+                std::string(name) + " must be >= 0 (0: the pair's tangential value, linear"
+                " law; got " + std::to_string(value) + ")"
+            );
+        }
+    }
+    bool rolling = s.rollingFriction > 0;
+    for (const PairContactSettings& p : s.pairs) rolling = rolling || p.rollingFriction.value_or(0) > 0;
+    if (rolling && !linear && !(s.rollingStiffness > 0 && s.rollingDamping > 0))
+    {
+        throw std::invalid_argument
+        (
+            "rollingFriction with the hertzMindlin law needs rollingStiffness > 0 and"
+            " rollingDamping > 0 (their defaults are the linear law's k_t and gamma_t)"
+        );
+    }
     if (linear)
     {
         if (!(s.tangentialStiffnessRatio > 0))
@@ -118,7 +151,7 @@ void validateContactSettings(const ContactSettings& s)
         validateConstants
         (
             where, p.restitution.value_or(s.restitution), p.friction.value_or(s.friction),
-            p.normalStiffness
+            p.normalStiffness, p.rollingFriction.value_or(s.rollingFriction)
         );
         if (p.normalStiffness && s.model != ContactModel::linearSpringDashpot)
         {
@@ -245,14 +278,19 @@ ContactLaw::ContactLaw(const ContactSettings& settings, const std::vector<Specie
         walls_[a] = makeCoefficients
         (
             species_[a].mass(), species_[a].radius(), 0, 0, true,
-            {settings_.restitution, settings_.friction, settings_.normalStiffness}
+            {settings_.restitution, settings_.friction, settings_.normalStiffness,
+             settings_.rollingFriction}
         );
     }
 }
 
 ContactLaw::PairConstants ContactLaw::constantsOf(int a, int b) const
 {
-    PairConstants k{settings_.restitution, settings_.friction, settings_.normalStiffness};
+    PairConstants k
+    {
+        settings_.restitution, settings_.friction, settings_.normalStiffness,
+        settings_.rollingFriction
+    };
     for (const PairContactSettings& p : settings_.pairs)
     {
         const bool match =
@@ -262,6 +300,7 @@ ContactLaw::PairConstants ContactLaw::constantsOf(int a, int b) const
         k.restitution = p.restitution.value_or(k.restitution);
         k.friction = p.friction.value_or(k.friction);
         k.normalStiffness = p.normalStiffness.value_or(k.normalStiffness);
+        k.rollingFriction = p.rollingFriction.value_or(k.rollingFriction);
     }
     return k;
 }
@@ -302,6 +341,12 @@ PairCoefficients ContactLaw::makeCoefficients
         // same form for the tangential dashpot, with the Mindlin stiffness
         // S_t = mindlinK sqrt(delta) in place of dF_n/d delta = 1.5 K sqrt(delta)
         c.mindlinDamp = alpha*std::sqrt(c.effectiveMass*c.mindlinK/1.5);
+    }
+    c.rollingFriction = constants.rollingFriction;
+    if (c.rollingFriction > 0)
+    {
+        c.rollingStiffness = settings_.rollingStiffness > 0 ? settings_.rollingStiffness : c.kt;
+        c.rollingDamping = settings_.rollingDamping > 0 ? settings_.rollingDamping : c.gammaT;
     }
     return c;
 }

@@ -12,7 +12,11 @@
 //    alpha sqrt(m* K) delta^{1/4}, with alpha(e) found by solving the dimensionless
 //    collision ODE (e does not depend on the impact velocity for this dashpot), the normal
 //    force clipped at zero; Mindlin tangential stiffness 8 G* a with the tangential
-//    *force* kept as history (incremental form, no spurious energy when a grows).
+//    *force* kept as history (incremental form, no spurious energy when a grows);
+//  - either with rolling resistance (off by default): LAMMPS pair granular's `rolling sds`,
+//    a spring-dashpot on the rolling displacement whose force is capped at mu_r |F_n|
+//    (ContactForce.hpp), the established shape proxy of sheared spheres (Estrada, Azema,
+//    Radjai & Taboada 2011, arXiv 1105.4418).
 
 #include "Species.hpp"
 
@@ -38,6 +42,7 @@ struct PairContactSettings
     std::optional<double> restitution;      // e of the pair
     std::optional<double> friction;         // mu of the pair
     std::optional<double> normalStiffness;  // k_n [N/m] (linear law only)
+    std::optional<double> rollingFriction;  // mu_r of the pair
 };
 
 //- "fine/coarse: e 0.7, mu 0.4, kn 3000" (the values set), for reports and keys.
@@ -57,6 +62,11 @@ struct ContactSettings
     // Hertz-Mindlin (same material for all species and walls)
     double youngsModulus = 1.0e7;                  // E [Pa]
     double poissonRatio = 0.3;                     // nu
+
+    // rolling resistance, LAMMPS `rolling sds k_r gamma_r mu_r` (0: off)
+    double rollingFriction = 0.0;                  // mu_r >= 0: torque cap mu_r R* |F_n|
+    double rollingStiffness = 0.0;                 // k_r [N/m]; 0: the pair's k_t (linear law)
+    double rollingDamping = 0.0;                   // gamma_r [kg/s]; 0: the pair's gamma_t (linear law)
 
     //- Per species pair (walls keep the single values); at most one entry per pair.
     std::vector<PairContactSettings> pairs;
@@ -84,6 +94,8 @@ struct PairCoefficients
     double hertzK = 0.0, mindlinK = 0.0, hertzDamp = 0.0, mindlinDamp = 0.0;
     double friction = 0.0;
     double restitution = 1.0;          // the e the dashpots were made for
+    // rolling resistance (rollingFriction 0: off)
+    double rollingFriction = 0.0, rollingStiffness = 0.0, rollingDamping = 0.0;
 };
 
 //- Coefficient tables for all species pairs and species-wall contacts.
@@ -133,7 +145,7 @@ private:
     //- The constants of one contact: the single ones, or a pair's values where set.
     struct PairConstants
     {
-        double restitution, friction, normalStiffness;
+        double restitution, friction, normalStiffness, rollingFriction;
     };
     PairConstants constantsOf(int a, int b) const;
 

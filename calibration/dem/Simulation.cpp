@@ -224,8 +224,18 @@ Simulation::Simulation
         vMax2 = std::max(vMax2, fluctuatingVelocity(i).squaredNorm());
     }
     const double shearScale = box_.shearRate*box_.ly;
+    // a pressure-controlled cell: the inertial speed sqrt(p/rho) of its pressure (a loose
+    // start compressed under a slow shear gains that much kinetic energy)
+    double pressureSpeed2 = 0;
+    if (barostat_)
+    {
+        double volume = 0;
+        for (double r : particles_.radius) volume += 4.0/3.0*M_PI*r*r*r;
+        pressureSpeed2 = barostat_->targetPressure()*volume/massSum;
+    }
     referenceEnergy_ = std::max
     ({
+        0.5*massSum*pressureSpeed2,
         translationalKineticEnergy() + rotationalKineticEnergy(),
         0.5*massSum*settings_.targetTemperature,
         0.5*massSum*shearScale*shearScale,

@@ -293,9 +293,10 @@ private:
     double nearRadiusGrowth_ = 0;
     std::vector<CacheLinePadded<std::vector<int>>> blockContacts_;   // per block: touching pairs this step, in pair order
     // per block: its touching pairs whose second particle j lies in a higher block, in
-    // decreasing pair order, with their force on i and n x F_t (added by j's owner after
+    // decreasing pair order, with their force on i and j's torque sum (n x F_t, and the
+    // rolling part; ContactResult::torqueSumJ) (added by j's owner after
     // the barrier; a compact copy, so few cache lines cross between the cores)
-    struct CrossContact { int j; double force[3]; double nCrossFt[3]; };
+    struct CrossContact { int j; double force[3]; double torqueSum[3]; };
     std::vector<CacheLinePadded<std::vector<CrossContact>>> blockCross_;
 
     // forces and torques of the previous evaluation (F^n) during a force pass, for the

@@ -212,6 +212,7 @@ int Simulation::findTouchingPairs(int b, bool rebuildNear)
             active_[k] = 0;
             history_[k].touching = false;
             history_[k].ft[0] = history_[k].ft[1] = history_[k].ft[2] = 0;
+            history_[k].xr[0] = history_[k].xr[1] = history_[k].xr[2] = 0;
             pfx_[k] = pfy_[k] = pfz_[k] = 0;
             pcx_[k] = pcy_[k] = pcz_[k] = 0;
         }
@@ -280,11 +281,11 @@ double Simulation::evaluateTouchingPairs(int b, int nContacts)
         pfx_[k] = res.force[0]; pfy_[k] = res.force[1]; pfz_[k] = res.force[2];
         pcx_[k] = res.nCrossFt[0]; pcy_[k] = res.nCrossFt[1]; pcz_[k] = res.nCrossFt[2];
         p.fx[i] += res.force[0]; p.fy[i] += res.force[1]; p.fz[i] += res.force[2];
-        p.tx[i] += res.nCrossFt[0]; p.ty[i] += res.nCrossFt[1]; p.tz[i] += res.nCrossFt[2];
+        p.tx[i] += res.torqueSumI[0]; p.ty[i] += res.torqueSumI[1]; p.tz[i] += res.torqueSumI[2];
         if (j < ownEnd)
         {
             p.fx[j] -= res.force[0]; p.fy[j] -= res.force[1]; p.fz[j] -= res.force[2];
-            p.tx[j] += res.nCrossFt[0]; p.ty[j] += res.nCrossFt[1]; p.tz[j] += res.nCrossFt[2];
+            p.tx[j] += res.torqueSumJ[0]; p.ty[j] += res.torqueSumJ[1]; p.tz[j] += res.torqueSumJ[2];
         }
         else
         {
@@ -292,7 +293,7 @@ double Simulation::evaluateTouchingPairs(int b, int nContacts)
             ({
                 j,
                 {res.force[0], res.force[1], res.force[2]},
-                {res.nCrossFt[0], res.nCrossFt[1], res.nCrossFt[2]}
+                {res.torqueSumJ[0], res.torqueSumJ[1], res.torqueSumJ[2]}
             });
         }
 
@@ -323,7 +324,7 @@ void Simulation::addCrossContacts(int begin, int end)
             const int j = c.j;
             if (j < begin || j >= end) continue;
             p.fx[j] -= c.force[0]; p.fy[j] -= c.force[1]; p.fz[j] -= c.force[2];
-            p.tx[j] += c.nCrossFt[0]; p.ty[j] += c.nCrossFt[1]; p.tz[j] += c.nCrossFt[2];
+            p.tx[j] += c.torqueSum[0]; p.ty[j] += c.torqueSum[1]; p.tz[j] += c.torqueSum[2];
         }
     }
 }

@@ -81,6 +81,7 @@ double Walls::addForces
             {
                 h.touching = false;
                 h.ft[0] = h.ft[1] = h.ft[2] = 0;
+                h.xr[0] = h.xr[1] = h.xr[2] = 0;
                 continue;
             }
             ContactKinematics kin;
@@ -100,6 +101,10 @@ double Walls::addForces
             p.fx[i] += res.force[0]; p.fy[i] += res.force[1]; p.fz[i] += res.force[2];
             const double r = p.radius[i];
             p.tx[i] -= r*res.nCrossFt[0]; p.ty[i] -= r*res.nCrossFt[1]; p.tz[i] -= r*res.nCrossFt[2];
+            if (law.wall(p.species[i]).rollingFriction > 0)
+            {
+                p.tx[i] += res.rollingTorque[0]; p.ty[i] += res.rollingTorque[1]; p.tz[i] += res.rollingTorque[2];
+            }
             maxOverlap = std::max(maxOverlap, res.overlap/(2*r));
         }
     }

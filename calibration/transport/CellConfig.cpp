@@ -51,7 +51,7 @@ std::vector<PairContactSettings> pairsFrom(const std::string& text)
     std::string token;
     const std::string form =
         "expected first/second:key=value[:key=value ...] with keys restitution, friction,"
-        " normalStiffness";
+        " normalStiffness, rollingFriction";
     while (in >> token)
     {
         std::istringstream parts(token);
@@ -84,6 +84,7 @@ std::vector<PairContactSettings> pairsFrom(const std::string& text)
             if (key == "restitution") p.restitution = value;
             else if (key == "friction") p.friction = value;
             else if (key == "normalStiffness") p.normalStiffness = value;
+            else if (key == "rollingFriction") p.rollingFriction = value;
             else
             {
                 throw std::invalid_argument

@@ -125,7 +125,8 @@ struct RheologyResult
     correlation::Estimate coordinationNumber;      // Z = 2 contacts/N
     correlation::Estimate meanOverlapFraction;     // <delta/(R_i + R_j)> over the contacts
     //- Steady: the first and second halves of the blocks agree in phi and mu within 3
-    //  combined standard errors; steadyCheck says by how much
+    //  combined standard errors or within 1e-3 (phi) and 5e-3 (mu); steadyCheck says by
+    //  how much
     bool steady = false;
     std::string steadyCheck;
     //- "dense flow", "jammed" (I below minimumInertialNumber: quasi-static, no inertial

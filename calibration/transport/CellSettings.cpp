@@ -63,6 +63,18 @@ const std::vector<CellSetting>& cellSettings()
             [](const R& s) { return s.simulation.contact.poissonRatio; },
             [](R& s, double v) { s.simulation.contact.poissonRatio = v; }},
 
+        // rolling resistance: not labelled (the store's key names it only when on, so
+        // the keys of stores without it stand: Store.cpp)
+        {"rollingFriction", S::contact, false, nullptr, false,
+            [](const R& s) { return s.simulation.contact.rollingFriction; },
+            [](R& s, double v) { s.simulation.contact.rollingFriction = v; }},
+        {"rollingStiffness", S::contact, false, nullptr, false,
+            [](const R& s) { return s.simulation.contact.rollingStiffness; },
+            [](R& s, double v) { s.simulation.contact.rollingStiffness = v; }},
+        {"rollingDamping", S::contact, false, nullptr, false,
+            [](const R& s) { return s.simulation.contact.rollingDamping; },
+            [](R& s, double v) { s.simulation.contact.rollingDamping = v; }},
+
         {"timeStep", S::runControl, false, "timeStep", false,
             [](const R& s) { return s.simulation.timeStep; },
             [](R& s, double v) { s.simulation.timeStep = v; }},

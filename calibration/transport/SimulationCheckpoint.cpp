@@ -61,15 +61,21 @@ void addSimulationState(io::Checkpoint& out, const Simulation& simulation)
     c.integerVectors["pairs/first"].assign(st.pairFirst.begin(), st.pairFirst.end());
     c.integerVectors["pairs/second"].assign(st.pairSecond.begin(), st.pairSecond.end());
     const std::size_t n = st.history.size();
-    std::vector<double> ft(3*n), normal(3*n);
+    std::vector<double> ft(3*n), normal(3*n), rolling(3*n);
     std::vector<std::int64_t> touching(n);
     for (std::size_t k = 0; k < n; ++k)
     {
-        for (int d = 0; d < 3; ++d) { ft[3*k + d] = st.history[k].ft[d]; normal[3*k + d] = st.history[k].n[d]; }
+        for (int d = 0; d < 3; ++d)
+        {
+            ft[3*k + d] = st.history[k].ft[d];
+            normal[3*k + d] = st.history[k].n[d];
+            rolling[3*k + d] = st.history[k].xr[d];
+        }
         touching[k] = st.history[k].touching ? 1 : 0;
     }
     c.vectors["pairs/tangentialForce"] = ft;
     c.vectors["pairs/normal"] = normal;
+    c.vectors["pairs/rollingDisplacement"] = rolling;
     c.integerVectors["pairs/touching"] = touching;
     c.vectors["pairs/force"] = st.pairForce;
     c.vectors["pairs/nCrossFt"] = st.pairNCrossFt;
@@ -125,6 +131,8 @@ void loadSimulationState(const io::Checkpoint& c, Simulation& simulation, const 
     st.pairSecond.assign(second.begin(), second.end());
     const auto& ft = vec("pairs_tangentialForce");
     const auto& normal = vec("pairs_normal");
+    const std::vector<double> rolling = c.vectors.count("pairs_rollingDisplacement")
+        ? c.vectors.at("pairs_rollingDisplacement") : std::vector<double>();
     const auto& touching = ivec("pairs_touching");
     const std::size_t n = touching.size();
     if (ft.size() != 3*n || normal.size() != 3*n)
@@ -135,6 +143,8 @@ void loadSimulationState(const io::Checkpoint& c, Simulation& simulation, const 
     for (std::size_t k = 0; k < n; ++k)
     {
         for (int d = 0; d < 3; ++d) { st.history[k].ft[d] = ft[3*k + d]; st.history[k].n[d] = normal[3*k + d]; }
+        // absent in checkpoints written before rolling resistance: none
+        if (rolling.size() == 3*n) for (int d = 0; d < 3; ++d) st.history[k].xr[d] = rolling[3*k + d];
         st.history[k].touching = touching[k] != 0;
     }
     st.pairForce = vec("pairs_force");
