@@ -4,9 +4,11 @@
 //   periodicDEM-cli cell.cfg [key=value ...]      command-line pairs override the file
 //
 // Keys (SI units; '#' starts a comment): the scalar settings of the cell, by the names of
-// transport/CellSettings.cpp (particles, solidsFraction, temperature, shearRate, seed; the
-// contact constants restitution, friction, normalStiffness, tangentialStiffnessRatio,
-// tangentialDampingRatio, youngsModulus, poissonRatio; the run controls timeStep (0: half
+// transport/CellSettings.cpp (particles, solidsFraction, temperature, shearRate,
+// targetPressure (> 0 with mode leesEdwards: sigma_yy held there, calibration/dem/Barostat.hpp),
+// seed; the contact constants restitution, friction, normalStiffness, tangentialStiffnessRatio,
+// tangentialDampingRatio, youngsModulus, poissonRatio, rollingFriction, rollingStiffness,
+// rollingDamping; the run controls barostatTime, timeStep (0: half
 // the recommended maximum), thermostatTime, equilibrationTime, maxEquilibrationTime,
 // samplingTime [s], sampleEvery [steps], blocks, threads, skin [m], maxOverlapFraction),
 // and:
@@ -15,7 +17,8 @@
 //   mode             nve | thermostatted (default) | leesEdwards | stochastic
 //   model            linearSpringDashpot | hertzMindlin
 //   pairs            per species pair, first/second:key=value[:key=value ...] with keys
-//                    restitution, friction, normalStiffness (unset: the single values)
+//                    restitution, friction, normalStiffness, rollingFriction (unset: the
+//                    single values)
 //   progressEvery [steps], output (HDF5 file), label
 //   lammpsData (write the initial state as a LAMMPS data file), throughputOnly (1: no
 //   measurements, only T; for speed comparisons), threadScalingRounds (with throughputOnly:

@@ -92,6 +92,14 @@ void validateObservations
                 rejectRow(context, row, "gammaDot", *c.gammaDot, "must be >= 0 [1/s]");
             }
         }
+        if (c.inertialNumber)
+        {
+            finite("inertialNumber", *c.inertialNumber);
+            if (!(*c.inertialNumber > 0.0))
+            {
+                rejectRow(context, row, "inertialNumber", *c.inertialNumber, "must be > 0");
+            }
+        }
         if (data[row].sigma <= 0.0)
         {
             rejectRow(context, row, "sigma", data[row].sigma, "must be > 0");

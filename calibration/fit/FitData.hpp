@@ -25,6 +25,9 @@ struct Condition
     //- Shear rate [1/s] of a sheared (Lees-Edwards) run; absent for driven runs.
     //  No law here uses it yet; it is carried into the validity envelope.
     std::optional<double> gammaDot;
+    //- Inertial number I = gammaDot d/sqrt(p/rho_s) of a rheology row (the mu(I) and
+    //  phi(I) laws of RheologyLaws.hpp read it); absent otherwise.
+    std::optional<double> inertialNumber;
 };
 
 //- A measured value (e.g. D_i [m2/s] or eta [m2/s]) at a condition, with its
@@ -54,7 +57,7 @@ struct Envelope
 //  offending row (0-based) and entry when: the table is empty; it has no more
 //  rows than parameterCount (a fit needs at least one degree of freedom to be
 //  judged); any number is not finite; phi <= 0 or phi >= 1; x outside [0, 1];
-//  T <= 0; d <= 0; gammaDot < 0; sigma <= 0; or, with positiveValues (fits in
+//  T <= 0; d <= 0; gammaDot < 0; inertialNumber <= 0; sigma <= 0; or, with positiveValues (fits in
 //  log space), value <= 0.
 void validateObservations
 (

@@ -38,7 +38,7 @@ CellRunSettings pressureControlledCell(double inertialNumber, int particles = 20
     s.simulation.timeStep = 1e-6;
     s.simulation.targetPressure = pressure;
     const double strain = 1/s.simulation.shearRate;
-    s.equilibrationTime = 4*strain;
+    s.equilibrationTime = 6*strain;
     s.maxEquilibrationTime = 12*strain;
     s.samplingTime = 8*strain;
     s.sampleEvery = 100;
@@ -125,7 +125,7 @@ TEST(PressureControl, AffineDilationAndBitwiseResume)
 TEST(PressureControl, HoldsThePressureAndMeasuresTheRheology)
 {
     CellRunResult low, high;
-    for (auto [I, result] : {std::pair{0.05, &low}, std::pair{0.3, &high}})
+    for (auto [I, result] : {std::pair{0.1, &low}, std::pair{0.4, &high}})
     {
         *result = runCell(pressureControlledCell(I, 300));
         std::cout << summary(*result);
