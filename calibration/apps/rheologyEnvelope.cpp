@@ -11,9 +11,9 @@
 //                        the case: rho_s g H of its depth, for instance)
 //   inertialNumbers      the I of the cells, each in (0, 1] (e.g. 0.005 0.01 0.03 0.1 0.3);
 //                        the shear rate of each is I sqrt(p/rho_s)/d
-//   equilibrationStrain  gammaDot t of the equilibration (default 6; up to 3 x that while
+//   equilibrationStrain  gammaDot t of the equilibration (default 10; up to 3 x that while
 //                        the density is not steady)
-//   samplingStrain       gammaDot t of the sampling (default 12)
+//   samplingStrain       gammaDot t of the sampling (default 20)
 //   output               prefix of the files written (default rheology): <output>-cells.dat
 //                        (one row per cell, with its steady check and regime) and
 //                        <output>-muICoeffs (the muI entries with their errors)
@@ -95,8 +95,8 @@ int main(int argc, char** argv)
             );
         }
         const std::vector<double> inertialNumbers = inertialNumbersFrom(config);
-        const double equilibrationStrain = configNumber(config, "equilibrationStrain", 6);
-        const double samplingStrain = configNumber(config, "samplingStrain", 12);
+        const double equilibrationStrain = configNumber(config, "equilibrationStrain", 10);
+        const double samplingStrain = configNumber(config, "samplingStrain", 20);
         for (const auto& [name, v] : {std::pair{"equilibrationStrain", equilibrationStrain},
                                       std::pair{"samplingStrain", samplingStrain}})
         {
