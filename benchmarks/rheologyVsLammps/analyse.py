@@ -25,6 +25,13 @@ def ours(path):
     return {"p": (v[0], v[1]), "mu": (v[2], v[3]), "I": (v[4], v[5]), "phi": (v[6], v[7]),
             "Z": (v[8], v[9]), "steady": steady}
 
+def lag1(values):
+    """Lag-1 autocorrelation of a series (a barostat that rings makes it negative)."""
+    m = statistics.fmean(values)
+    num = sum((a - m)*(b - m) for a, b in zip(values, values[1:]))
+    den = sum((a - m)**2 for a in values)
+    return num/den if den > 0 else 0.0
+
 def lammps(path, gd):
     rows = [list(map(float, l.split())) for l in open(path) if l.strip() and not l.startswith("#")]
     n = len(rows) // 8
@@ -36,7 +43,7 @@ def lammps(path, gd):
         blocks.append({"p": p, "mu": tau/p, "I": gd*d/math.sqrt(p/rho),
                        "phi": statistics.fmean(r[3] for r in part),
                        "Z": statistics.fmean(r[4] for r in part)})
-    est = {}
+    est = {"phiLag1": (lag1([r[3] for r in rows]), 0.0)}
     for k in blocks[0]:
         vals = [b[k] for b in blocks]
         est[k] = (statistics.fmean(vals), statistics.stdev(vals)/math.sqrt(len(vals)))
@@ -67,6 +74,8 @@ for I, muR in [(I, m) for m in rollings for I in inertial]:
             sigma = math.hypot(a[1], b[1])
             z = abs(a[0] - b[0])/sigma if sigma > 0 else float("inf")
             print(f"  {k:4s} {a[0]:.5g} +- {a[1]:.2g}   {b[0]:.5g} +- {b[1]:.2g}   {z:.2f}")
+        print(f"  LAMMPS phi per barostat segment: lag-1 autocorrelation {l[seed]['phiLag1'][0]:.2f}"
+              " (a ringing barostat makes it negative)")
     print(f"I target {I}, mu_r {muR}, seeds combined (the error: max of the seeds' spread and"
           " block errors):")
     row = [I, muR]

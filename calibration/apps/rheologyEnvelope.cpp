@@ -17,8 +17,9 @@
 //   output               prefix of the files written (default rheology): <output>-cells.dat
 //                        (one row per cell, with its steady check and regime) and
 //                        <output>-muICoeffs (the muI entries with their errors)
-// A cell that is not a steady dense flow (jammed, a gas, or drifting) is reported and left
-// out of the fit; the fit needs 4 cells.
+// A cell that is not a steady dense flow (jammed, a gas, or drifting) or that the run
+// refused (a pressure the barostat could not hold, a cell blown into a gas) is reported,
+// written as such in the table and left out of the fit; the fit needs 4 cells.
 #include "CellConfig.hpp"
 
 #include "fit/RheologyLaws.hpp"
@@ -138,7 +139,26 @@ int main(int argc, char** argv)
             s.maxEquilibrationTime = 3*s.equilibrationTime;
             s.samplingTime = samplingStrain/s.simulation.shearRate;
             s.label = "I " + std::to_string(I);
-            const CellRunResult r = runCell(s);
+            CellRunResult r;
+            try
+            {
+                r = runCell(s);
+            }
+            catch (const std::runtime_error& err)
+            {
+                // a cell the barostat could not hold, or one blown into a gas: reported,
+                // left out, the envelope goes on
+                table << I << " " << s.simulation.shearRate
+                      << " nan nan nan nan nan nan nan nan nan nan no \"refused\"\n";
+                table.flush();
+                std::printf
+                (
+                    "cell %zu/%zu: I %g refused, left out of the fit: %s\n",
+                    k + 1, inertialNumbers.size(), I, err.what()
+                );
+                std::fflush(stdout);
+                continue;
+            }
             const RheologyResult& h = r.rheology;
             table << I << " " << s.simulation.shearRate << " " << h.inertialNumber.value << " "
                   << h.inertialNumber.standardError << " " << h.stressRatio.value << " "

@@ -13,8 +13,10 @@
 // The relative pressure error drives the strain rate, so a loose start (sigma_yy ~ 0)
 // compresses at 1/tau_p whatever the stiffness. In a dense packing sigma_yy responds to
 // strain with a modulus of at most about k/d (k the contact stiffness): the loop gain per
-// update is then every dt k/(p d tau_p), and the automatic tau_p makes it 1/5 (stable, no
-// overshoot). In inertial flow the modulus is far below k/d (sigma_yy ~ (phi_c - phi)^-2,
+// update is then every dt k/(p d tau_p), and the automatic tau_p makes it 1/5. sigma_yy
+// answers a dilation over a sound-crossing time (hundreds of steps), not within an update:
+// the loop is an integrator with a delay, stable while its gain over that delay stays
+// below 1 (the steady checks of the tests and benchmarks hold it). In inertial flow the modulus is far below k/d (sigma_yy ~ (phi_c - phi)^-2,
 // d ln sigma/d ln phi ~ 40 at I 0.3 against k/(p d) ~ 1000), so the density relaxes over
 // a fraction of a strain there; 1/20 made that several strains, longer than the blocks.
 

@@ -480,7 +480,21 @@ void Simulation::step()
 void Simulation::applyBarostat()
 {
     lastBarostatStress_ = totalStress()(1, 1)/box_.volume();
-    dilateGradientExtent(barostat_->dilation(lastBarostatStress_));
+    const double factor = barostat_->dilation(lastBarostatStress_);
+    double rMax = 0;
+    for (double r : particles_.radius) rMax = std::max(rMax, r);
+    const double thinnest = 2*(2*rMax + skin_);
+    if (box_.ly*factor < thinnest)
+    {
+        std::ostringstream msg;
+        msg << "pressure control failed at step " << stepCount_ + 1 << ": targetPressure "
+            << barostat_->targetPressure() << " Pa compresses the cell's height to "
+            << box_.ly*factor << " m, below the " << thinnest << " m (2 (2 R_max + skin))"
+            << " its " << particles_.size() << " particles need at solids fraction "
+            << solidsFraction() << "; use more particles";
+        throw std::runtime_error(msg.str());
+    }
+    dilateGradientExtent(factor);
     // a target below what the shear's agitation alone exerts: the cell expands without end
     const double phi = solidsFraction();
     if (phi < 0.01)

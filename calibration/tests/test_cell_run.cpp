@@ -327,6 +327,6 @@ TEST(CellSettings, EachSettingRoundTripsByName)
     // the dictionaries' valid entries per scope
     const auto contact = cellSettingNames(CellSetting::Scope::contact);
     EXPECT_EQ(contact.front(), "restitution");
-    EXPECT_EQ(contact.size(), 7u);
+    EXPECT_EQ(contact.size(), 10u);   // e, mu, kn, kt/kn, gt/gn, E, nu, mu_r, k_r, gamma_r
     EXPECT_EQ(findCellSetting("samplingTime")->required, true);
 }

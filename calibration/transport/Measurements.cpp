@@ -239,6 +239,8 @@ void RheologyMeasurement::finish(CellRunResult& result, long) const
         return correlation::meanAndStandardError(values);
     };
     const std::size_t nb = blocks.size();
+    std::size_t tensileBlocks = 0;
+    for (const Block& k : blocks) tensileBlocks += k.p > 0 ? 0 : 1;
     r.pressure = estimate(&Block::p, 0, nb);
     r.shearStress = estimate(&Block::tau, 0, nb);
     r.stressRatio = estimate(&Block::mu, 0, nb);
@@ -271,7 +273,15 @@ void RheologyMeasurement::finish(CellRunResult& result, long) const
 
     const double I = r.inertialNumber.value, Z = r.coordinationNumber.value;
     std::ostringstream why;
-    if (I < RheologyResult::minimumInertialNumber)
+    if (tensileBlocks > 0)
+    {
+        // mu and I have no meaning there (their blocks were counted as 0)
+        r.regime = "gas";
+        r.steady = false;
+        why << "sigma_yy <= 0 in " << tensileBlocks << " of " << nb << " blocks: no dense"
+            << " rheology";
+    }
+    else if (I < RheologyResult::minimumInertialNumber)
     {
         r.regime = "jammed";
         why << "I = " << I << " < " << RheologyResult::minimumInertialNumber
