@@ -26,8 +26,10 @@ def ours(path):
         raise SystemExit(f"{path}: no rheology line")
     v = list(map(float, m.groups()))
     steady = re.search(r"steady: (yes|NO)", text).group(1)
-    equilibrated = float(re.search(r"equilibrated: \S+ after ([0-9.eE+-]+) s", text).group(1))
-    return {"equilibrated": equilibrated,"p": (v[0], v[1]), "mu": (v[2], v[3]), "I": (v[4], v[5]), "phi": (v[6], v[7]),
+    m = re.search(r"equilibrated: (\S+) after ([0-9.eE+-]+) s", text)
+    # not equilibrated within its limit: LAMMPS is sampled over its whole production
+    equilibrated = float(m.group(2)) if m.group(1) == "yes" else 0.0
+    return {"equilibrated": equilibrated, "equilibratedText": m.group(1),"p": (v[0], v[1]), "mu": (v[2], v[3]), "I": (v[4], v[5]), "phi": (v[6], v[7]),
             "Z": (v[8], v[9]), "steady": steady}
 
 def lag1(values):
@@ -75,7 +77,8 @@ for I, muR in [(I, m) for m in rollings for I in inertial]:
         tag = f"I{I}-seed{seed}-muR{muR}"
         o[seed] = ours(os.path.join(out, tag, "ours.log"))
         l[seed] = lammps(os.path.join(out, tag, "segments.txt"), gd, o[seed]["equilibrated"])
-        print(f"\nI target {I}, mu_r {muR}, seed {seed} (ours steady: {o[seed]['steady']}):")
+        print(f"\nI target {I}, mu_r {muR}, seed {seed} (ours steady: {o[seed]['steady']},"
+              f" equilibrated: {o[seed]['equilibratedText']}):")
         for k in ("p", "mu", "phi", "I", "Z"):
             a, b = o[seed][k], l[seed][k]
             sigma = math.hypot(a[1], b[1])
