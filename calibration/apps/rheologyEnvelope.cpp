@@ -192,6 +192,17 @@ int main(int argc, char** argv)
             });
         }
         const sdf::fit::RheologyFit fit = sdf::fit::fitRheology(points);
+        if (points.size() < 6)
+        {
+            // relative sigma: the errors come from the scatter about the law, with
+            // points - 3 degrees of freedom
+            std::printf
+            (
+                "warning: %zu cells for three parameters: the errors rest on %zu degrees of"
+                " freedom; mu_d and I_0 are extrapolated unless I reaches well past I_0"
+                " (give 6 or more cells, up to I 0.5-1)\n", points.size(), points.size() - 3
+            );
+        }
         for (const auto* fits : {&fit.muFits, &fit.phiFits})
         {
             for (const sdf::fit::FitResult& f : *fits)
