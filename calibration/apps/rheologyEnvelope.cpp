@@ -108,13 +108,7 @@ int main(int argc, char** argv)
         }
         const std::string output = configText(config, "output", "rheology");
 
-        double rho = 0, weights = 0;
-        for (std::size_t s = 0; s < base.species.size(); ++s)
-        {
-            rho += base.volumeFractions[s]*base.species[s].density;
-            weights += base.volumeFractions[s];
-        }
-        rho /= weights;
+        const double rho = solidsDensity(base);
         const double d = meanDiameter(base);
         const double p = base.simulation.targetPressure;
         std::printf

@@ -111,9 +111,7 @@ void validateContactSettings(const ContactSettings& s)
             );
         }
     }
-    bool rolling = s.rollingFriction > 0;
-    for (const PairContactSettings& p : s.pairs) rolling = rolling || p.rollingFriction.value_or(0) > 0;
-    if (rolling && !linear && !(s.rollingStiffness > 0 && s.rollingDamping > 0))
+    if (hasRollingResistance(s) && !linear && !(s.rollingStiffness > 0 && s.rollingDamping > 0))
     {
         throw std::invalid_argument
         (
@@ -162,6 +160,13 @@ void validateContactSettings(const ContactSettings& s)
             );
         }
     }
+}
+
+bool hasRollingResistance(const ContactSettings& s)
+{
+    bool rolling = s.rollingFriction > 0;
+    for (const PairContactSettings& p : s.pairs) rolling = rolling || p.rollingFriction.value_or(0) > 0;
+    return rolling;
 }
 
 double hertzRestitution(double alpha)

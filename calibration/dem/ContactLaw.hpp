@@ -75,6 +75,9 @@ struct ContactSettings
 //- Throws std::invalid_argument naming the offending entry.
 void validateContactSettings(const ContactSettings& settings);
 
+//- Rolling resistance on anywhere: the single rollingFriction or a pair's is > 0.
+bool hasRollingResistance(const ContactSettings& settings);
+
 //- Dimensionless Tsuji damping factor alpha for Hertz contacts with restitution e
 //  (x'' = -x^{3/2} - alpha x^{1/4} x', normal force clipped at zero).
 double hertzDampingFactor(double restitution);

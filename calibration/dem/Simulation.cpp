@@ -150,6 +150,14 @@ Simulation::Simulation
         settings_.shearRate, dt_, settings_.seed
     );
     box_.shearRate = driving_->shearRate();
+    double dMin = species_[0].diameter;
+    for (const Species& s : species_) dMin = std::min(dMin, s.diameter);
+    skin_ = settings_.skin >= 0 ? settings_.skin : 0.3*dMin;
+    // near-list skin: on the sheared N 3000 cell of benchmarks/demVsLammps (skin 0.3 d)
+    // 0.05-0.1 of the skin was fastest (at 0.1: rebuilt every ~27 steps, holding ~1/3 of
+    // the listed pairs); 0.2 of it was 4 % slower, 0.5 of it 12 %
+    nearSkin_ = 0.1*skin_;
+
     if (settings_.targetPressure != 0)
     {
         if (settings_.mode != CellMode::leesEdwards)
@@ -169,12 +177,8 @@ Simulation::Simulation
               + std::to_string(settings_.barostatTime)
             );
         }
-        double dMin = species_[0].diameter, dMax = dMin;
-        for (const Species& s : species_)
-        {
-            dMin = std::min(dMin, s.diameter);
-            dMax = std::max(dMax, s.diameter);
-        }
+        double dMax = dMin;
+        for (const Species& s : species_) dMax = std::max(dMax, s.diameter);
         // the Barostat refuses a pressure <= 0 (before it is used for the automatic time)
         const double tau = settings_.barostatTime > 0 || !(settings_.targetPressure > 0)
             ? settings_.barostatTime
@@ -186,14 +190,6 @@ Simulation::Simulation
         barostat_ = std::make_unique<Barostat>(settings_.targetPressure, tau, dt_);
         settings_.barostatTime = tau;
     }
-
-    double dMin = species_[0].diameter;
-    for (const Species& s : species_) dMin = std::min(dMin, s.diameter);
-    skin_ = settings_.skin >= 0 ? settings_.skin : 0.3*dMin;
-    // near-list skin: on the sheared N 3000 cell of benchmarks/demVsLammps (skin 0.3 d)
-    // 0.05-0.1 of the skin was fastest (at 0.1: rebuilt every ~27 steps, holding ~1/3 of
-    // the listed pairs); 0.2 of it was 4 % slower, 0.5 of it 12 %
-    nearSkin_ = 0.1*skin_;
 
 #ifdef _OPENMP
     nThreads_ = settings_.threads > 0 ? settings_.threads : omp_get_max_threads();
@@ -226,13 +222,8 @@ Simulation::Simulation
     const double shearScale = box_.shearRate*box_.ly;
     // a pressure-controlled cell: the inertial speed sqrt(p/rho) of its pressure (a loose
     // start compressed under a slow shear gains that much kinetic energy)
-    double pressureSpeed2 = 0;
-    if (barostat_)
-    {
-        double volume = 0;
-        for (double r : particles_.radius) volume += 4.0/3.0*M_PI*r*r*r;
-        pressureSpeed2 = barostat_->targetPressure()*volume/massSum;
-    }
+    const double pressureSpeed2 = barostat_
+        ? barostat_->targetPressure()*solidsFraction()*box_.volume()/massSum : 0.0;
     referenceEnergy_ = std::max
     ({
         0.5*massSum*pressureSpeed2,
@@ -481,9 +472,9 @@ void Simulation::applyBarostat()
 {
     lastBarostatStress_ = totalStress()(1, 1)/box_.volume();
     const double factor = barostat_->dilation(lastBarostatStress_);
-    double rMax = 0;
-    for (double r : particles_.radius) rMax = std::max(rMax, r);
-    const double thinnest = 2*(2*rMax + skin_);
+    // the neighbour list's own limit (its cutoff: 2 R_max + skin; radii do not change
+    // during a run)
+    const double thinnest = 2*list_.cutoff();
     if (box_.ly*factor < thinnest)
     {
         std::ostringstream msg;

@@ -365,9 +365,7 @@ std::string settingsKey(const dem::CellRunSettings& b, const std::string& contac
         key << "; mode " << dem::cellModeName(sim.mode);
     }
     // rolling resistance: named only when on (in a pair or for all)
-    bool rolling = c.rollingFriction > 0;
-    for (const dem::PairContactSettings& p : c.pairs) rolling = rolling || p.rollingFriction.value_or(0) > 0;
-    if (rolling)
+    if (dem::hasRollingResistance(c))
     {
         key << "; rolling mu_r " << fmt10(c.rollingFriction) << " k_r "
             << fmt10(c.rollingStiffness) << " gamma_r " << fmt10(c.rollingDamping);

@@ -6,6 +6,7 @@
 #include "Simulation.hpp"
 
 #include <cstring>
+#include <string>
 
 namespace sdf::dem::test
 {
@@ -71,6 +72,31 @@ template<class Allocator>
 bool bitwiseEqual(const std::vector<double, Allocator>& a, const std::vector<double, Allocator>& b)
 {
     return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size()*sizeof(double)) == 0;
+}
+
+//- The message of the Exception f() throws ("wrong exception type", "no exception"
+//  otherwise): refusal tests match a part of it.
+template<class Exception, class F>
+std::string messageOf(F&& f)
+{
+    try
+    {
+        f();
+    }
+    catch (const Exception& err)
+    {
+        return err.what();
+    }
+    catch (...)
+    {
+        return "wrong exception type";
+    }
+    return "no exception";
+}
+
+inline bool contains(const std::string& text, const std::string& part)
+{
+    return text.find(part) != std::string::npos;
 }
 
 } // namespace sdf::dem::test

@@ -6,33 +6,8 @@
 
 using namespace sdf::dem;
 
-namespace
-{
-
-template<class Exception, class F>
-std::string messageOf(F&& f)
-{
-    try
-    {
-        f();
-    }
-    catch (const Exception& err)
-    {
-        return err.what();
-    }
-    catch (...)
-    {
-        return "wrong exception type";
-    }
-    return "no exception";
-}
-
-bool contains(const std::string& text, const std::string& word)
-{
-    return text.find(word) != std::string::npos;
-}
-
-} // namespace
+using test::contains;
+using test::messageOf;
 
 TEST(InputValidation, SolidsFractionAboveJamming)
 {

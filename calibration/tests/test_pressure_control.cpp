@@ -13,6 +13,8 @@
 #include <iostream>
 
 using namespace sdf::dem;
+using test::contains;
+using test::messageOf;
 
 namespace
 {
@@ -46,19 +48,6 @@ CellRunSettings pressureControlledCell(double inertialNumber, int particles = 20
     s.blocks = 8;
     s.seed = 3;
     return s;
-}
-
-template<class Error, class Call>
-std::string messageOf(Call call)
-{
-    try { call(); }
-    catch (const Error& e) { return e.what(); }
-    return "(no " + std::string(typeid(Error).name()) + " thrown)";
-}
-
-bool contains(const std::string& text, const std::string& part)
-{
-    return text.find(part) != std::string::npos;
 }
 
 } // namespace

@@ -163,11 +163,9 @@ TEST(RollingResistance, BitwiseResume)
 
 TEST(RollingResistance, Refusals)
 {
-    const auto message = [](ContactSettings cs)
+    const auto message = [](const ContactSettings& cs)
     {
-        try { validateContactSettings(cs); }
-        catch (const std::invalid_argument& e) { return std::string(e.what()); }
-        return std::string("(accepted)");
+        return test::messageOf<std::invalid_argument>([&] { validateContactSettings(cs); });
     };
     ContactSettings cs;
     cs.rollingFriction = -0.1;

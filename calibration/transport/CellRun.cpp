@@ -420,6 +420,17 @@ double meanDiameter(const CellRunSettings& settings)
     return sum/wsum;
 }
 
+double solidsDensity(const CellRunSettings& settings)
+{
+    double sum = 0, wsum = 0;
+    for (std::size_t s = 0; s < settings.species.size(); ++s)
+    {
+        sum += settings.volumeFractions[s]*settings.species[s].density;
+        wsum += settings.volumeFractions[s];
+    }
+    return sum/wsum;
+}
+
 Packing initialCell(const CellRunSettings& settings, double T0)
 {
     PackingSettings ps;

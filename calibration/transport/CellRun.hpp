@@ -86,6 +86,9 @@ void validateCellRunSettings(const CellRunSettings& settings);
 //- Mean diameter of the species weighted by their solids volume fractions.
 double meanDiameter(const CellRunSettings& settings);
 
+//- Mean density of the species weighted by their solids volume fractions (rho_s of I).
+double solidsDensity(const CellRunSettings& settings);
+
 //- The cell's packing at its solids fraction with Maxwellian velocities at T0 (at
 //  equipartition for a stochastically driven cell, InitialState.hpp; plus the
 //  streaming profile if sheared); also written as a LAMMPS data file if

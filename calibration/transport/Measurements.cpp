@@ -199,13 +199,7 @@ void RheologyMeasurement::finish(CellRunResult& result, long) const
     r.pressureControlled = settings.simulation.targetPressure > 0;
     r.targetPressure = settings.simulation.targetPressure;
     r.meanDiameter = result.meanDiameter;
-    double rho = 0, weights = 0;
-    for (std::size_t s = 0; s < settings.species.size(); ++s)
-    {
-        rho += settings.volumeFractions[s]*settings.species[s].density;
-        weights += settings.volumeFractions[s];
-    }
-    r.solidsDensity = rho/weights;
+    r.solidsDensity = solidsDensity(settings);
     const double gammaDot = std::abs(settings.simulation.shearRate);
 
     // per block: the means, and mu and I from them (ratios of means, not means of ratios)
