@@ -55,6 +55,26 @@ std::optional<double> optionalDouble(const io::Group& g, const std::string& name
     return g.readDouble(name);
 }
 
+RheologyRecord readRheology(const io::Group& g)
+{
+    RheologyRecord h;
+    h.targetPressure = g.readDouble("targetPressure");
+    h.meanDiameter = g.readDouble("meanDiameter");
+    h.solidsDensity = g.readDouble("solidsDensity");
+    h.inertialNumber = g.readDouble("inertialNumber");
+    h.inertialNumberError = g.readDouble("inertialNumberError");
+    h.stressRatio = g.readDouble("stressRatio");
+    h.stressRatioError = g.readDouble("stressRatioError");
+    h.solidsFraction = g.readDouble("solidsFraction");
+    h.solidsFractionError = g.readDouble("solidsFractionError");
+    h.pressure = g.readDouble("pressure");
+    h.pressureError = g.readDouble("pressureError");
+    h.coordinationNumber = g.readDouble("coordinationNumber");
+    h.regime = g.readString("regime");
+    return h;
+}
+
+
 SpeciesRecord readSpecies(const io::Group& g)
 {
     SpeciesRecord s;
@@ -313,6 +333,24 @@ std::string shearedConditionName(double phi, double x, double gammaDot, std::int
 }
 
 
+std::string rheologyConditionName
+(
+    double inertialNumber,
+    double pressure,
+    double x,
+    std::int64_t seed
+)
+{
+    char name[160];
+    std::snprintf
+    (
+        name, sizeof name, "rheology_I%.6g_p%.6g_x%.6g_seed%lld", inertialNumber, pressure,
+        x, static_cast<long long>(seed)
+    );
+    return name;
+}
+
+
 std::string sizedConditionName(const std::string& name, std::int64_t particles)
 {
     return name + "_N" + std::to_string(particles);
@@ -427,6 +465,10 @@ void appendCondition
         {
             g.setAttribute("targetT", cond.targetT);
         }
+        if (cond.inertialNumber)
+        {
+            g.setAttribute("targetInertialNumber", *cond.inertialNumber);
+        }
         g.setAttribute("seed", cond.seed);
         g.setAttribute("particles", std::int64_t(r.settings.particles));
         g.setAttribute("settingsKey", key);
@@ -468,6 +510,10 @@ void appendCondition
             }
         }
         writeCollisions(g, r);
+        if (cond.inertialNumber)
+        {
+            dem::writeRheology(g, r.rheology);
+        }
         // timings: the only attributes that differ between identical runs
         const io::Group t = g.createGroup("timing");
         t.setAttribute("wallSeconds", r.wallSeconds);
@@ -558,6 +604,11 @@ StoreContents readStore(const std::string& path)
             if (g.hasGroup("collisions"))
             {
                 c.collisions = readCollisions(g.openGroup("collisions"));
+            }
+            if (g.hasGroup("rheology"))
+            {
+                c.rheology = readRheology(g.openGroup("rheology"));
+                c.rheology->targetInertialNumber = g.readDouble("targetInertialNumber");
             }
             contents.conditions.push_back(c);
         }

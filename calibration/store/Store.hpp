@@ -31,6 +31,12 @@
 //                            cell's species order (fine/fine, fine/coarse,
 //                            coarse/coarse): attributes count, energySum [J];
 //                            int64 dataset histogram (nBins + 2: under, bins, over)
+//   /conditions/<name>/rheology
+//                            pressure-controlled cells of a rheology calibration (inputs:
+//                            targetInertialNumber on the condition): dem::writeRheology's
+//                            attributes (targetPressure, meanDiameter, solidsDensity, the
+//                            estimates with <name>Error, steady, regime); only steady dense
+//                            flows are stored
 //   /conditions/<name>/timing
 //                            wallSeconds cpuSeconds particleStepsPerSecond (the
 //                            only values that differ between identical runs)
@@ -111,6 +117,15 @@ std::string conditionName(double phi, double x, double T, std::int64_t seed);
 //- Group name of a sheared condition, e.g. phi0.5_x0.4_gammaDot20_seed1.
 std::string shearedConditionName(double phi, double x, double gammaDot, std::int64_t seed);
 
+//- Group name of a pressure-controlled rheology cell, e.g. rheology_I0.01_p1000_x0.5_seed1.
+std::string rheologyConditionName
+(
+    double inertialNumber,
+    double pressure,
+    double x,
+    std::int64_t seed
+);
+
 //- Group name of one cell size of a finite-size calibration: name + "_N<particles>",
 //  e.g. phi0.3_x0.4_T0.01_seed1_N300.
 std::string sizedConditionName(const std::string& name, std::int64_t particles);
@@ -127,6 +142,7 @@ struct ConditionInputs
     double x = 0;
     double targetT = 0;                  // driven cells (gammaDot absent)
     std::optional<double> gammaDot;      // sheared cells [1/s] (targetT unused)
+    std::optional<double> inertialNumber;   // rheology cells: the I they are sheared at
     std::int64_t seed = 0;
 };
 
@@ -215,6 +231,21 @@ struct CollisionRecord
     ) const;
 };
 
+//- What the rheology fit reads back of a pressure-controlled cell (steady dense flow).
+struct RheologyRecord
+{
+    double targetInertialNumber = 0;
+    double targetPressure = 0;        // [Pa]
+    double meanDiameter = 0;          // d of I [m]
+    double solidsDensity = 0;         // rho_s of I [kg/m3]
+    double inertialNumber = 0, inertialNumberError = 0;
+    double stressRatio = 0, stressRatioError = 0;
+    double solidsFraction = 0, solidsFractionError = 0;
+    double pressure = 0, pressureError = 0;         // sigma_yy [Pa]
+    double coordinationNumber = 0;
+    std::string regime;
+};
+
 //- What the fits and the tables read back of one condition.
 struct ConditionRecord
 {
@@ -233,6 +264,8 @@ struct ConditionRecord
     //  the same: the binning follows from the species and targetT, both in the key or
     //  the name, so such a condition is reused, not rerun).
     std::optional<CollisionRecord> collisions;
+    //- Rheology cells only (pressure-controlled); the transport fits and tables skip them
+    std::optional<RheologyRecord> rheology;
 };
 
 struct StoreContents

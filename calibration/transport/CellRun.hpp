@@ -190,6 +190,11 @@ CellRunResult runCell(const CellRunSettings& settings);
 //  flags): the cell file's and the calibration store's.
 void writeDiffusiveRegime(const io::Group& g, const correlation::DiffusiveRegimeCheck& check);
 
+//- The rheology of a sheared cell as the group `rheology` of parent (nothing if not
+//  measured): each estimate with its block standard error (<name>Error), the steady check
+//  and the regime; the cell file's results/rheology and the calibration store's.
+void writeRheology(const io::Group& parent, const RheologyResult& rheology);
+
 //- Human-readable summary.
 std::string summary(const CellRunResult& result);
 

@@ -53,6 +53,33 @@ void writeDiffusiveRegime(const io::Group& g, const correlation::DiffusiveRegime
 }
 
 
+void writeRheology(const io::Group& res, const RheologyResult& h)
+{
+    if (!h.measured) return;
+    const io::Group g = res.createGroup("rheology");
+    g.setAttribute("pressureControlled", std::int64_t(h.pressureControlled ? 1 : 0));
+    g.setAttribute("targetPressure", h.targetPressure);
+    g.setAttribute("barostatTime", h.barostatTime);
+    g.setAttribute("meanDiameter", h.meanDiameter);
+    g.setAttribute("solidsDensity", h.solidsDensity);
+    const std::pair<const char*, const correlation::Estimate*> estimates[] =
+    {
+        {"pressure", &h.pressure}, {"shearStress", &h.shearStress},
+        {"stressRatio", &h.stressRatio}, {"inertialNumber", &h.inertialNumber},
+        {"solidsFraction", &h.solidsFraction}, {"coordinationNumber", &h.coordinationNumber},
+        {"meanOverlapFraction", &h.meanOverlapFraction}
+    };
+    for (const auto& [name, e] : estimates)
+    {
+        g.setAttribute(name, e->value);
+        g.setAttribute(std::string(name) + "Error", e->standardError);
+    }
+    g.setAttribute("steady", std::int64_t(h.steady ? 1 : 0));
+    g.setAttribute("steadyCheck", h.steadyCheck);
+    g.setAttribute("regime", h.regime);
+    g.setAttribute("regimeReason", h.regimeReason);
+}
+
 namespace
 {
 
@@ -114,35 +141,6 @@ void writeRun(const io::Group& run, const CellRunResult& r)
     run.setAttribute("particleStepsPerSecond", r.particleStepsPerSecond);
     run.setAttribute("equilibrated", std::int64_t(r.equilibrated ? 1 : 0));
     run.setAttribute("equilibrationTime", r.equilibrationTime);
-}
-
-//- results/rheology (sheared cells): the RheologyResult as attributes, each estimate with
-//  its block standard error (<name>Error)
-void writeRheology(const io::Group& res, const RheologyResult& h)
-{
-    if (!h.measured) return;
-    const io::Group g = res.createGroup("rheology");
-    g.setAttribute("pressureControlled", std::int64_t(h.pressureControlled ? 1 : 0));
-    g.setAttribute("targetPressure", h.targetPressure);
-    g.setAttribute("barostatTime", h.barostatTime);
-    g.setAttribute("meanDiameter", h.meanDiameter);
-    g.setAttribute("solidsDensity", h.solidsDensity);
-    const std::pair<const char*, const correlation::Estimate*> estimates[] =
-    {
-        {"pressure", &h.pressure}, {"shearStress", &h.shearStress},
-        {"stressRatio", &h.stressRatio}, {"inertialNumber", &h.inertialNumber},
-        {"solidsFraction", &h.solidsFraction}, {"coordinationNumber", &h.coordinationNumber},
-        {"meanOverlapFraction", &h.meanOverlapFraction}
-    };
-    for (const auto& [name, e] : estimates)
-    {
-        g.setAttribute(name, e->value);
-        g.setAttribute(std::string(name) + "Error", e->standardError);
-    }
-    g.setAttribute("steady", std::int64_t(h.steady ? 1 : 0));
-    g.setAttribute("steadyCheck", h.steadyCheck);
-    g.setAttribute("regime", h.regime);
-    g.setAttribute("regimeReason", h.regimeReason);
 }
 
 //- results: the temperature and the diffusion measurements per species (velocity

@@ -57,6 +57,7 @@ Description
 #include "caseEnvelope.H"
 #include "conditionScheduler.H"
 #include "fitReport.H"
+#include "rheologyReport.H"
 #include "numberText.H"
 
 #include "store/ProcessorStores.hpp"
@@ -106,7 +107,7 @@ int main(int argc, char *argv[])
         (
             runTime, properties, settings, args.get<word>("fromCase")
         );
-        if (fromCase->coefficients.empty())
+        if (fromCase->coefficients.empty() && !settings.calibratesRheology())
         {
             Info<< "Nothing to calibrate: constant/granularProperties switches"
                 << " off both diffusivity and kineticSieving (model none)"
@@ -117,38 +118,41 @@ int main(int argc, char *argv[])
         }
     }
 
+    // The transport cells (D, eta, breakage) over the envelope phi x x x T
+    // (or gammaDot), the rheology cells over I at the rheology's pressure
     calibrationSettings::envelopeAxes envelope;
-    wordList coefficients(settings.coefficients());
+    wordList coefficients(settings.transportCoefficients());
     if (fromCase)
     {
         envelope = fromCase->axes;
         coefficients = fromCase->coefficients;
     }
-    else
+    else if (!coefficients.empty())
     {
         envelope = settings.envelope();
     }
 
-    const std::vector<calibrationCondition> conds
-    (
-        envelopeConditions
+    std::vector<calibrationCondition> conds;
+    if (!coefficients.empty())
+    {
+        conds = envelopeConditions
         (
             envelope, settings.replicas(), settings.finiteSizeParticles()
-        )
+        );
+    }
+    const std::vector<calibrationCondition> transportConds(conds);
+    const std::vector<calibrationCondition> rheologyConds
+    (
+        rheologyConditions(settings)
     );
+    conds.insert(conds.end(), rheologyConds.begin(), rheologyConds.end());
 
     // Check every condition's DEM settings before running anything
     for (const calibrationCondition& c : conds)
     {
         try
         {
-            sdf::dem::validateCellRunSettings
-            (
-                settings.conditionSettings
-                (
-                    c.phi, c.x, c.rate(), c.seed, c.name, c.particles
-                )
-            );
+            sdf::dem::validateCellRunSettings(cellSettings(c, settings));
         }
         catch (const std::exception& err)
         {
@@ -176,8 +180,11 @@ int main(int argc, char *argv[])
 
     Info<< "Calibration of " << settings.fine().name << " (fine, d = "
         << settings.fine().d << ") / " << settings.coarse().name
-        << " (coarse, d = " << settings.coarse().d << "): "
-        << label(conds.size()) << " conditions (" << envelope.phi.size()
+        << " (coarse, d = " << settings.coarse().d << "), store " << h5 << nl;
+    if (!transportConds.empty())
+    {
+    Info<< "Transport: "
+        << label(transportConds.size()) << " conditions (" << envelope.phi.size()
         << " phi x " << envelope.x.size() << " x x " << envelope.rates().size()
         << " " << settings.rateName() << " x " << settings.replicas().size()
         << " replicas"
@@ -188,18 +195,27 @@ int main(int argc, char *argv[])
              + " cell sizes"
            ).c_str()
         << (settings.sheared() ? ", sheared cells (Lees-Edwards)" : "")
-        << "), store " << h5
-        << nl;
+        << ")" << nl;
+    }
+    if (!rheologyConds.empty())
+    {
+        const calibrationSettings::rheologyEnvelope& r = settings.rheology();
+        const sdf::dem::CellRunSettings cell =
+            cellSettings(rheologyConds.front(), settings);
+        Info<< "Rheology: " << label(rheologyConds.size()) << " pressure-"
+            << "controlled sheared cells (inertial number I "
+            << listText(r.inertialNumber).c_str() << " x "
+            << settings.replicas().size() << " replicas) at sigma_yy "
+            << r.pressure << " Pa, x " << r.x << "; I = gammaDot d/sqrt(p/rho_s)"
+            << " with d " << sdf::dem::meanDiameter(cell) << " m, rho_s "
+            << sdf::dem::solidsDensity(cell) << " kg/m3" << nl;
+    }
     if (!conds.empty())
     {
         // the step the cells run at and the largest the engine accepts, so a
         // user can set `timeStep` (e.g. t_c/50 for a case's sheared envelope)
         const calibrationCondition& c = conds.front();
-        const sdf::dem::CellRunSettings cell =
-            settings.conditionSettings
-            (
-                c.phi, c.x, c.rate(), c.seed, c.name, c.particles
-            );
+        const sdf::dem::CellRunSettings cell = cellSettings(c, settings);
         const sdf::dem::ContactLaw law(cell.simulation.contact, cell.species);
         const double maximum = law.maximumTimeStep();
         const double step = cell.simulation.timeStep;
@@ -220,7 +236,7 @@ int main(int argc, char *argv[])
     {
         isStored[i] = calibrationStore::isStored
         (
-            h5, stored, conds[i].name, settings.settingsKey(conds[i].particles)
+            h5, stored, conds[i].name, settingsKeyOf(conds[i], settings)
         );
     }
 
@@ -231,14 +247,19 @@ int main(int argc, char *argv[])
         {
             if (!s) ++toRun;
         }
-        Info<< "Envelope: phi " << listText(envelope.phi).c_str() << ", x "
-            << listText(envelope.x).c_str() << ", " << settings.rateName()
-            << " " << listText(envelope.rates()).c_str() << ", coefficients (";
-        for (const word& c : coefficients)
+        if (!transportConds.empty())
         {
-            Info<< (&c == &coefficients.first() ? "" : " ") << c;
+            Info<< "Envelope: phi " << listText(envelope.phi).c_str()
+                << ", x " << listText(envelope.x).c_str() << ", "
+                << settings.rateName() << " "
+                << listText(envelope.rates()).c_str() << ", coefficients (";
+            for (const word& c : coefficients)
+            {
+                Info<< (&c == &coefficients.first() ? "" : " ") << c;
+            }
+            Info<< ")" << nl;
         }
-        Info<< ")" << nl << "Dry run (-dryRun): " << toRun << " of "
+        Info<< "Dry run (-dryRun): " << toRun << " of "
             << label(conds.size()) << " conditions would run, "
             << label(conds.size()) - toRun << " are stored; nothing is run"
             << " or written" << nl << nl << "End" << nl << endl;
@@ -288,8 +309,13 @@ int main(int argc, char *argv[])
             calibrationStore::mergeProcessorStores(h5);
         }
     }
-    Info<< nl << "DEM: " << ran << " conditions run, "
-        << label(conds.size()) - ran << " taken from " << h5 << ", "
+    label taken = 0;
+    for (const bool s : isStored)
+    {
+        if (s) ++taken;
+    }
+    Info<< nl << "DEM: " << ran << " conditions run and stored, "
+        << taken << " taken from " << h5 << ", "
         << fmt(std::chrono::duration<double>
            (std::chrono::steady_clock::now() - start).count()).c_str()
         << " s" << nl << endl;
@@ -305,7 +331,17 @@ int main(int argc, char *argv[])
         return 0;
     }
 
-    fitAndReport(runTime, h5, settings, envelope, coefficients, conds);
+    if (!transportConds.empty())
+    {
+        fitAndReport
+        (
+            runTime, h5, settings, envelope, coefficients, transportConds
+        );
+    }
+    if (!rheologyConds.empty())
+    {
+        fitRheologyAndReport(runTime, h5, settings, rheologyConds);
+    }
 
     Info<< "End" << nl << endl;
     return 0;

@@ -44,6 +44,12 @@ struct FinishedCondition
 
 std::string Foam::calibrationCondition::text() const
 {
+    if (rheology())
+    {
+        return
+            "rheology I " + fmt(inertialNumber) + " p " + fmt(pressure)
+          + " seed " + std::to_string(seed);
+    }
     return
         "phi " + fmt(phi) + " x " + fmt(x)
       + (sheared() ? " gammaDot " + fmt(gammaDot) : " T " + fmt(T))
@@ -59,6 +65,10 @@ sdf::store::ConditionInputs Foam::calibrationCondition::inputs() const
     in.phi = phi;
     in.x = x;
     in.seed = seed;
+    if (rheology())
+    {
+        in.inertialNumber = inertialNumber;
+    }
     if (sheared())
     {
         in.gammaDot = gammaDot;
@@ -118,6 +128,71 @@ std::vector<Foam::calibrationCondition> Foam::envelopeConditions
 }
 
 
+std::vector<Foam::calibrationCondition> Foam::rheologyConditions
+(
+    const calibrationSettings& settings
+)
+{
+    std::vector<calibrationCondition> conds;
+    if (!settings.calibratesRheology())
+    {
+        return conds;
+    }
+    const calibrationSettings::rheologyEnvelope& r = settings.rheology();
+    for (const scalar I : r.inertialNumber)
+    {
+        for (const label seed : settings.replicas())
+        {
+            calibrationCondition c;
+            c.phi = r.phi;
+            c.x = r.x;
+            c.T = 0;
+            c.gammaDot =
+                settings.rheologyCellSettings(I, seed, "").simulation.shearRate;
+            c.seed = seed;
+            c.particles = 0;
+            c.inertialNumber = I;
+            c.pressure = r.pressure;
+            c.pointName =
+                sdf::store::rheologyConditionName(I, r.pressure, r.x, seed);
+            c.name = c.pointName;
+            conds.push_back(c);
+        }
+    }
+    return conds;
+}
+
+
+sdf::dem::CellRunSettings Foam::cellSettings
+(
+    const calibrationCondition& c,
+    const calibrationSettings& settings
+)
+{
+    if (c.rheology())
+    {
+        return settings.rheologyCellSettings(c.inertialNumber, c.seed, c.name);
+    }
+    return settings.conditionSettings
+    (
+        c.phi, c.x, c.rate(), c.seed, c.name, c.particles
+    );
+}
+
+
+std::string Foam::settingsKeyOf
+(
+    const calibrationCondition& c,
+    const calibrationSettings& settings
+)
+{
+    return
+        c.rheology()
+      ? settings.rheologySettingsKey()
+      : settings.settingsKey(c.particles);
+}
+
+
 std::vector<Foam::label> Foam::conditionsOfThisRank
 (
     const std::vector<calibrationCondition>& conds,
@@ -151,11 +226,7 @@ double Foam::expectedCost
     const calibrationSettings& settings
 )
 {
-    const sdf::dem::CellRunSettings s =
-        settings.conditionSettings
-        (
-            c.phi, c.x, c.rate(), c.seed, c.name, c.particles
-        );
+    const sdf::dem::CellRunSettings s = cellSettings(c, settings);
     return
         double(s.particles)*(s.equilibrationTime + s.samplingTime)
        *(1 + 4*c.phi*c.phi);
@@ -263,13 +334,7 @@ Foam::label Foam::runConditions
             try
             {
                 const calibrationCondition& c = conds[f.index];
-                f.result = sdf::dem::runCell
-                (
-                    settings.conditionSettings
-                    (
-                        c.phi, c.x, c.rate(), c.seed, c.name, c.particles
-                    )
-                );
+                f.result = sdf::dem::runCell(cellSettings(c, settings));
             }
             catch (const std::exception& err)
             {
@@ -331,7 +396,26 @@ Foam::label Foam::runConditions
             "condition " + std::to_string(f.index + 1) + "/"
           + std::to_string(conds.size())
           + " (" + c.text() + ")";
-        if (!f.error.empty())
+        const bool leftOut =
+            c.rheology()
+         && (!f.error.empty() || !f.result.rheology.denseSteadyFlow());
+        if (leftOut)
+        {
+            // not a steady dense flow: reported, never stored as one
+            const sdf::dem::RheologyResult& h = f.result.rheology;
+            progress << where.c_str() << " done in " << fmt(f.seconds).c_str()
+                << " s: left out of the rheology fit, not stored ("
+                << (
+                       f.error.empty()
+                     ? (h.steady ? "" : "not steady: " + h.steadyCheck + "; ")
+                     + "regime " + h.regime + ": " + h.regimeReason
+                     : "refused by the DEM engine: " + f.error
+                   ).c_str()
+                << ")" << endl;
+            doneCost += cost[f.index];
+            doneSeconds += f.seconds;
+        }
+        else if (!f.error.empty())
         {
             stop = true;
             if (firstError.empty())
@@ -382,6 +466,23 @@ Foam::label Foam::runConditions
                   ? std::max(0.0, doneSeconds/doneCost*costLeft/busy)
                   : 0;
                 const sdf::dem::CellRunResult& r = f.result;
+                if (c.rheology())
+                {
+                    const sdf::dem::RheologyResult& h = r.rheology;
+                    progress << where.c_str() << " done in "
+                        << fmt(f.seconds).c_str() << " s, ETA "
+                        << fmt(eta).c_str() << " s (I = "
+                        << fmt(h.inertialNumber.value).c_str() << ", mu = "
+                        << fmt(h.stressRatio.value).c_str() << " +- "
+                        << fmt(h.stressRatio.standardError).c_str()
+                        << ", phi = " << fmt(h.solidsFraction.value).c_str()
+                        << " +- "
+                        << fmt(h.solidsFraction.standardError).c_str()
+                        << ", sigma_yy = " << fmt(h.pressure.value).c_str()
+                        << " Pa)" << endl;
+                    lock.lock();
+                    continue;
+                }
                 progress << where.c_str() << " done in " << fmt(f.seconds).c_str()
                     << " s, ETA " << fmt(eta).c_str()
                     << " s (T = " << fmt(r.temperature).c_str()

@@ -7,6 +7,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "fitReport.H"
+#include "rheologyReport.H"
 #include "numberText.H"
 #include "OSspecific.H"
 
@@ -447,7 +448,7 @@ void plotCoefficient
                 {
                     if (r.cond.x != x || r.cond.phi != phi) continue;
                     if (!isD && !r.hasEta) continue;
-                    sdf::fit::Condition c{phi, x, r.T, d, {}};
+                    sdf::fit::Condition c{phi, x, r.T, d, {}, {}};
                     os << std::setprecision(10) << r.T << " "
                        << (isD ? r.D : r.eta) << " "
                        << (isD ? r.DError : r.etaError) << " "
@@ -965,9 +966,21 @@ void Foam::fitAndReport
             << exit(FatalError);
     }
     const fileName coeffFile(runTime.globalPath()/runTime.constant()/"granularCoefficients");
+    // the rheology of an earlier calibration stays (it is run apart)
+    std::string kept;
+    if (isFile(coeffFile))
+    {
+        std::ifstream in(coeffFile);
+        std::stringstream existing;
+        existing << in.rdbuf();
+        kept = rheologyBlockOf(existing.str());
+    }
     try
     {
-        sdf::store::writeTextAtomically(coeffFile, text.str());
+        sdf::store::writeTextAtomically
+        (
+            coeffFile, withRheologyBlock(text.str(), kept)
+        );
     }
     catch (const std::exception& err)
     {

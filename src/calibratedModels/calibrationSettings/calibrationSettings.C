@@ -19,7 +19,7 @@
 
 const Foam::wordList Foam::calibrationSettings::validCoefficients
 ({
-    "D", "eta", "breakage"
+    "D", "eta", "breakage", "rheology"
 });
 
 const Foam::wordList Foam::calibrationSettings::validDLaws
@@ -54,7 +54,7 @@ const Foam::wordList validEntries
     "etaDiameterPower", "fitMaxIterations",
     "particles", "mode", "plot", "concurrentConditions", "fromCase",
     "equilibrationStrain", "maxEquilibrationStrain", "samplingStrain",
-    "finiteSize", "sievingAttribution", "diffusivityEstimate"
+    "finiteSize", "sievingAttribution", "diffusivityEstimate", "rheology"
 });
 
 
@@ -255,9 +255,21 @@ Foam::calibrationSettings::calibrationSettings
                 << nl << "    valid names: " << validCoefficients
                 << " (D: diffusivity of the fines, eta: kinetic sieving"
                 << " coefficient of the coarse, breakage: collision frequency"
-                << " and mean impact energy of both species)" << nl
+                << " and mean impact energy of both species, rheology: mu(I)"
+                << " and phi(I) of the bulk, the entry 'rheology')" << nl
                 << exit(FatalIOError);
         }
+    }
+    if (calibratesRheology())
+    {
+        readRheology(dict);
+    }
+    else if (dict.found("rheology"))
+    {
+        FatalIOErrorInFunction(dict)
+            << "Entry 'rheology' given, but 'coefficients' " << coefficients_
+            << " does not hold rheology: add it to calibrate mu(I) and"
+            << " phi(I), or remove the entry" << nl << exit(FatalIOError);
     }
     laws_ = readLawList(dict, "laws", validDLaws, "D");
     etaLaws_ = readLawList(dict, "etaLaws", validEtaLaws, "eta");
@@ -345,13 +357,16 @@ Foam::calibrationSettings::calibrationSettings
     b.simulation.mode = sdf::dem::cellModeFromName(mode);
     checkRateAxis(dict);
     readStrains(dict);
-    if (samplingStrain_ > 0)
+    const bool rheologyOnly =
+        calibratesRheology() && transportCoefficients().empty();
+    if (samplingStrain_ > 0 || (rheologyOnly && !dict.found("samplingTime")))
     {
         // The run controls require samplingTime; with samplingStrain (and
         // no time entries, readStrains) it is set per condition
-        // (conditionSettings): this value is never run
+        // (conditionSettings), and the rheology cells take theirs from
+        // rheology/samplingStrain: this value is never run
         dictionary runControls(dict);
-        runControls.add("samplingTime", samplingStrain_);
+        runControls.add("samplingTime", max(samplingStrain_, scalar(1)));
         demDictionary::readRunControls(runControls, b);
     }
     else
@@ -407,6 +422,104 @@ void Foam::calibrationSettings::readFiniteSize(const dictionary& dict)
                 << ": give distinct cell sizes (>= 2 particles) from the"
                 << " smallest to the largest" << nl << exit(FatalIOError);
         }
+    }
+}
+
+
+void Foam::calibrationSettings::readRheology(const dictionary& dict)
+{
+    if (!dict.isDict("rheology"))
+    {
+        FatalIOErrorInFunction(dict)
+            << "'coefficients' holds rheology but the sub-dictionary"
+            << " 'rheology' is missing; give at least" << nl
+            << "    rheology { inertialNumber (0.003 0.01 0.03 0.1 0.3);"
+            << " pressure 1000; }" << nl
+            << "    (the inertial numbers of the cells, each in (0, 1], and the"
+            << " pressure [Pa] they are sheared at)" << nl << exit(FatalIOError);
+    }
+    const dictionary& rd = dict.subDict("rheology");
+    modelCoeffs::checkKeys
+    (
+        rd,
+        wordList
+        ({
+            "inertialNumber", "pressure", "x", "phi", "equilibrationStrain",
+            "maxEquilibrationStrain", "samplingStrain"
+        })
+    );
+    rheologyEnvelope& r = rheology_;
+    if (rd.found("inertialNumber"))
+    {
+        // the dense regime: I -> 0 is quasi-static (jammed), I > 1 a gas
+        for (const scalar I : rd.get<scalarList>("inertialNumber"))
+        {
+            if (!(I > 0 && I <= 1))
+            {
+                FatalIOErrorInFunction(rd)
+                    << "Entry 'inertialNumber': value " << I << " is outside"
+                    << " (0, 1], the dense regime of mu(I) (I -> 0 is"
+                    << " quasi-static, a jammed cell; above 1 the cell is a"
+                    << " granular gas)" << nl << exit(FatalIOError);
+            }
+        }
+    }
+    r.inertialNumber = readEnvelopeList
+    (
+        rd, "inertialNumber", 0, 1 + SMALL,
+        "inertial numbers of the rheology cells, each in (0, 1]"
+    );
+    if (!rd.found("pressure"))
+    {
+        FatalIOErrorInFunction(rd)
+            << "Missing entry 'pressure' [Pa]: the normal stress sigma_yy the"
+            << " rheology cells are sheared at (the pressure scale of the case,"
+            << " e.g. rho_bulk g H/2 of its depth H)" << nl << exit(FatalIOError);
+    }
+    r.pressure = rd.get<scalar>("pressure");
+    if (!(r.pressure > 0) || !std::isfinite(r.pressure))
+    {
+        FatalIOErrorInFunction(rd)
+            << "Entry 'pressure " << r.pressure << "' must be a pressure > 0 Pa"
+            << " (the normal stress sigma_yy of the rheology cells)" << nl
+            << exit(FatalIOError);
+    }
+    r.x = rd.getOrDefault<scalar>("x", 0.5);
+    if (!(r.x > 0 && r.x < 1))
+    {
+        FatalIOErrorInFunction(rd)
+            << "Entry 'x " << r.x << "' (coarse fraction of the rheology"
+            << " cells' solids) must lie in (0, 1)" << nl << exit(FatalIOError);
+    }
+    r.phi = rd.getOrDefault<scalar>("phi", 0.5);
+    if (!(r.phi > 0.05 && r.phi < phiJamming))
+    {
+        FatalIOErrorInFunction(rd)
+            << "Entry 'phi " << r.phi << "' (the packing the rheology cells"
+            << " start from; the barostat then finds the steady one) must lie"
+            << " in (0.05, " << phiJamming << ")" << nl << exit(FatalIOError);
+    }
+    r.equilibrationStrain = rd.getOrDefault<scalar>("equilibrationStrain", 10);
+    r.maxEquilibrationStrain =
+        rd.getOrDefault<scalar>
+        (
+            "maxEquilibrationStrain", 3*r.equilibrationStrain
+        );
+    r.samplingStrain = rd.getOrDefault<scalar>("samplingStrain", 20);
+    if
+    (
+        !(r.samplingStrain > 0) || !(r.equilibrationStrain >= 0)
+     || !(r.maxEquilibrationStrain >= r.equilibrationStrain)
+     || !std::isfinite(r.samplingStrain)
+     || !std::isfinite(r.maxEquilibrationStrain)
+    )
+    {
+        FatalIOErrorInFunction(rd)
+            << "Strains: samplingStrain " << r.samplingStrain << " must be"
+            << " > 0, equilibrationStrain " << r.equilibrationStrain
+            << " >= 0 and maxEquilibrationStrain " << r.maxEquilibrationStrain
+            << " >= equilibrationStrain (all finite)" << nl
+            << exit(FatalIOError);
     }
 }
 
@@ -571,6 +684,64 @@ sdf::dem::CellRunSettings Foam::calibrationSettings::conditionSettings
 }
 
 
+Foam::wordList Foam::calibrationSettings::transportCoefficients() const
+{
+    wordList transport;
+    for (const word& c : coefficients_)
+    {
+        if (c != "rheology")
+        {
+            transport.append(c);
+        }
+    }
+    return transport;
+}
+
+
+sdf::dem::CellRunSettings Foam::calibrationSettings::rheologyCellSettings
+(
+    const scalar inertialNumber,
+    const label seed,
+    const std::string& name
+) const
+{
+    const rheologyEnvelope& r = rheology_;
+    sdf::dem::CellRunSettings s = base_;
+    s.simulation.mode = sdf::dem::CellMode::leesEdwards;
+    s.volumeFractions = {1 - r.x, r.x};
+    s.solidsFraction = r.phi;
+    s.simulation.targetPressure = r.pressure;
+    // I = gammaDot d/sqrt(p/rho_s), d and rho_s as the cell measures I
+    s.simulation.shearRate =
+        inertialNumber*std::sqrt(r.pressure/sdf::dem::solidsDensity(s))
+       /sdf::dem::meanDiameter(s);
+    s.equilibrationTime = r.equilibrationStrain/s.simulation.shearRate;
+    s.maxEquilibrationTime = r.maxEquilibrationStrain/s.simulation.shearRate;
+    s.samplingTime = r.samplingStrain/s.simulation.shearRate;
+    s.seed = seed;
+    s.label = name;
+    return s;
+}
+
+
+std::string Foam::calibrationSettings::rheologySettingsKey() const
+{
+    sdf::dem::CellRunSettings s = rheologyCellSettings(1, 0, "");
+    // the times follow from the strains and I (in the name): the key names
+    // the strains
+    s.equilibrationTime = base_.equilibrationTime;
+    s.maxEquilibrationTime = base_.maxEquilibrationTime;
+    s.samplingTime = base_.samplingTime;
+    const rheologyEnvelope& r = rheology_;
+    return
+        sdf::store::settingsKey(s, contactModel_)
+      + "; rheology start phi " + fmt(r.phi)
+      + " equilibrationStrain " + fmt(r.equilibrationStrain)
+      + " maxEquilibrationStrain " + fmt(r.maxEquilibrationStrain)
+      + " samplingStrain " + fmt(r.samplingStrain);
+}
+
+
 std::string Foam::calibrationSettings::settingsKey(const label particles) const
 {
     sdf::dem::CellRunSettings b = base_;
@@ -607,7 +778,10 @@ void Foam::calibrationSettings::appendToStore
 {
     sdf::store::appendCondition
     (
-        path, fine_.name, coarse_.name, settingsKey(result.settings.particles),
+        path, fine_.name, coarse_.name,
+        inputs.inertialNumber
+      ? rheologySettingsKey()
+      : settingsKey(result.settings.particles),
         inputs, result
     );
 }

@@ -178,6 +178,12 @@ void Foam::calibrationTable::read()
         std::map<std::string, std::pair<std::int64_t, std::string>> sizeAtPoint;
         for (const sdf::store::ConditionRecord& record : contents.conditions)
         {
+            if (record.rheology)
+            {
+                // a rheology cell of the same store: not a transport
+                // condition (fitted apart, calibrateGranularMixture)
+                continue;
+            }
             if (record.gammaDot)
             {
                 // A sheared cell's T is an output: its conditions do not lie

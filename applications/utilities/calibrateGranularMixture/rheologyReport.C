@@ -1,0 +1,365 @@
+/*---------------------------------------------------------------------------*\
+  =========                 |
+  \\      /  F ield         | segregationDegradationFoam
+   \\    /   O peration     |
+    \\  /    A nd           |
+     \\/     M anipulation  |
+\*---------------------------------------------------------------------------*/
+
+#include "rheologyReport.H"
+#include "numberText.H"
+#include "OSspecific.H"
+
+#include "fit/RheologyLaws.hpp"
+#include "store/Store.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <iomanip>
+#include <map>
+#include <sstream>
+
+using namespace Foam;
+using numberText::fmt;
+
+namespace
+{
+
+//- The header of a granularCoefficients that holds only the rheology
+const char* const coefficientsHeader =
+    "/*--------------------------------*- C++ -*----------------------------------*\\\n"
+    "  granularCoefficients: constitutive laws fitted to DEM results (sdf::fit)\n"
+    "\\*---------------------------------------------------------------------------*/\n"
+    "FoamFile\n"
+    "{\n"
+    "    version     2.0;\n"
+    "    format      ascii;\n"
+    "    class       dictionary;\n"
+    "    location    \"constant\";\n"
+    "    object      granularCoefficients;\n"
+    "}\n\n"
+    "// ************************************************************************* //\n";
+
+
+//- The sub-dictionary rheology: the muI entries with their errors, what I
+//  means (d, rho_s, pressure), the I range, the model choices
+std::string rheologyBlock
+(
+    const sdf::fit::RheologyFit& fit,
+    const double d,
+    const double rhoS,
+    const double pressure
+)
+{
+    std::ostringstream os;
+    os << std::setprecision(10);
+    os << "// The bulk's rheology from pressure-controlled sheared DEM cells\n"
+       << "// (calibrateGranularMixture, coefficient rheology): what\n"
+       << "// bulkFlow/muICoeffs/rheology calibrated reads\n"
+       << "rheology\n{\n"
+       << sdf::fit::muICoefficientEntries(fit)
+       << "    d               " << d << ";   // [m] d of I = gammaDot d/sqrt(p/rho_s):"
+       << " the cells' solids-volume weighted mean\n"
+       << "    rhoS            " << rhoS << ";   // [kg/m3] rho_s of I\n"
+       << "    pressure        " << pressure << ";   // [Pa] sigma_yy of the cells\n"
+       << "    IRange          (" << fit.inertialNumbers.min << " "
+       << fit.inertialNumbers.max << ");\n"
+       << "    cells           " << fit.muI().points << ";\n";
+    const auto selection = [&](const char* name, const sdf::fit::ModelSelection& s)
+    {
+        os << "    " << name << "\n    {\n";
+        for (const sdf::fit::RankedLaw& r : s.ranking)
+        {
+            os << "        " << r.law << " " << r.delta << ";   // AIC difference\n";
+        }
+        os << "    }\n";
+    };
+    selection("muSelection", fit.muSelection);
+    selection("phiSelection", fit.phiSelection);
+    os << "}\n\n";
+    return os.str();
+}
+
+
+//- postProcessing/calibration/rheology.dat and, with gnuplot, rheology.png
+//  (mu(I) and phi(I): the cells with their errors and the fitted laws)
+void plotRheology
+(
+    const fileName& dir,
+    const std::vector<sdf::fit::RheologyPoint>& points,
+    const sdf::fit::RheologyFit& fit,
+    const bool plot
+)
+{
+    mkDir(dir);
+    const fileName dat(dir/"rheology.dat");
+    {
+        std::ofstream os(dat);
+        os << std::setprecision(10)
+           << "# rheology cells (steady dense flow) and the fitted muI and phiILinear laws\n"
+           << "# I mu mu_err phi phi_err mu_fitted phi_fitted\n";
+        for (const sdf::fit::RheologyPoint& p : points)
+        {
+            sdf::fit::Condition c;
+            c.inertialNumber = p.inertialNumber;
+            os << p.inertialNumber << " " << p.stressRatio << " " << p.stressRatioError
+               << " " << p.solidsFraction << " " << p.solidsFractionError << " "
+               << fit.muI().evaluate(c) << " " << fit.phiILinear().evaluate(c) << "\n";
+        }
+    }
+    Info<< "Written " << dat << nl;
+    if (!plot || std::system("command -v gnuplot > /dev/null 2>&1") != 0)
+    {
+        return;
+    }
+    const fileName gp(dir/"rheology.gp");
+    const fileName png(dir/"rheology.png");
+    {
+        std::ofstream os(gp);
+        os << "set terminal pngcairo size 1000,450\n"
+           << "set output '" << png.c_str() << "'\n"
+           << "set multiplot layout 1,2\n"
+           << "set logscale x\nset key top left\nset xlabel 'I'\n"
+           << "set ylabel 'mu = |sigma_xy|/sigma_yy'\nset title 'mu(I): DEM and muI fit'\n"
+           << "plot '" << dat.c_str() << "' using 1:2:3 with yerrorbars pt 7 title 'DEM',"
+           << " '' using 1:6 with lines title 'muI'\n"
+           << "set key top right\nset ylabel 'phi'\nset title 'phi(I): DEM and linear fit'\n"
+           << "plot '" << dat.c_str() << "' using 1:4:5 with yerrorbars pt 7 title 'DEM',"
+           << " '' using 1:7 with lines title 'phi_c - a I'\n"
+           << "unset multiplot\n";
+    }
+    const std::string cmd = "gnuplot '" + std::string(gp) + "' > /dev/null 2>&1";
+    if (std::system(cmd.c_str()) == 0)
+    {
+        Info<< "Written " << png << nl;
+    }
+}
+
+} // End anonymous namespace
+
+
+std::string Foam::rheologyBlockOf(const std::string& text)
+{
+    // the block as we write it: an optional comment run, "rheology", "{",
+    // ..., "}" at the line's start
+    std::istringstream in(text);
+    std::vector<std::string> lines;
+    for (std::string line; std::getline(in, line);)
+    {
+        lines.push_back(line);
+    }
+    for (std::size_t i = 0; i + 1 < lines.size(); ++i)
+    {
+        if (lines[i] != "rheology" || lines[i + 1] != "{")
+        {
+            continue;
+        }
+        std::size_t first = i;
+        while (first > 0 && lines[first - 1].rfind("// ", 0) == 0
+            && lines[first - 1].rfind("// *", 0) != 0)
+        {
+            --first;
+        }
+        std::size_t last = i + 1;
+        while (last < lines.size() && lines[last] != "}")
+        {
+            ++last;
+        }
+        std::string block;
+        for (std::size_t k = first; k <= last && k < lines.size(); ++k)
+        {
+            block += lines[k] + "\n";
+        }
+        return block + "\n";
+    }
+    return std::string();
+}
+
+
+std::string Foam::withRheologyBlock
+(
+    const std::string& text,
+    const std::string& block
+)
+{
+    std::string rest(text);
+    const std::string old(rheologyBlockOf(text));
+    if (!old.empty())
+    {
+        // the block as returned, less its trailing blank line if absent
+        std::size_t at = rest.find(old);
+        std::size_t length = old.size();
+        if (at == std::string::npos)
+        {
+            length = old.size() - 1;
+            at = rest.find(old.substr(0, length));
+        }
+        if (at != std::string::npos)
+        {
+            rest.erase(at, length);
+        }
+    }
+    if (block.empty())
+    {
+        return rest;
+    }
+    const std::size_t end = rest.rfind("// ****");
+    if (end == std::string::npos)
+    {
+        return rest + block;
+    }
+    return rest.substr(0, end) + block + rest.substr(end);
+}
+
+
+void Foam::fitRheologyAndReport
+(
+    const Time& runTime,
+    const fileName& h5,
+    const calibrationSettings& settings,
+    const std::vector<calibrationCondition>& conds
+)
+{
+    // the rheology of each stored rheology cell, and its T (measured)
+    std::map<std::string, std::pair<sdf::store::RheologyRecord, double>> stored;
+    try
+    {
+        for (const sdf::store::ConditionRecord& c : sdf::store::readStore(h5).conditions)
+        {
+            if (c.rheology)
+            {
+                stored[c.name] = {*c.rheology, c.T};
+            }
+        }
+    }
+    catch (const std::exception& err)
+    {
+        FatalErrorInFunction
+            << "Reading the rheology cells failed: " << err.what() << nl
+            << "    constant/granularCoefficients is not written." << nl
+            << exit(FatalError);
+    }
+
+    std::vector<sdf::fit::RheologyPoint> points;
+    double d = 0, rhoS = 0;
+    label leftOut = 0;
+    for (const calibrationCondition& c : conds)
+    {
+        const auto it = stored.find(c.name);
+        if (it == stored.end())
+        {
+            ++leftOut;
+            continue;
+        }
+        const sdf::store::RheologyRecord& h = it->second.first;
+        d = h.meanDiameter;
+        rhoS = h.solidsDensity;
+        points.push_back
+        ({
+            h.inertialNumber, h.stressRatio, h.stressRatioError,
+            h.solidsFraction, h.solidsFractionError, h.meanDiameter,
+            it->second.second
+        });
+    }
+    const calibrationSettings::rheologyEnvelope& r = settings.rheology();
+    Info<< nl << "Rheology: " << label(points.size()) << " of "
+        << label(conds.size()) << " cells are steady dense flows";
+    if (leftOut)
+    {
+        Info<< " (" << leftOut << " left out: see their lines above)";
+    }
+    Info<< nl;
+    if (points.size() < 4)
+    {
+        FatalErrorInFunction
+            << "The rheology fit needs at least 4 steady dense cells (three"
+            << " parameters of mu(I)); " << label(points.size()) << " of "
+            << label(conds.size()) << " cells at sigma_yy " << r.pressure
+            << " Pa are." << nl
+            << "    Give more inertial numbers within the dense regime"
+            << " (rheology/inertialNumber, e.g. 0.003-0.5), or longer runs"
+            << " (rheology/equilibrationStrain, samplingStrain) for cells"
+            << " that were not steady." << nl
+            << "    constant/granularCoefficients is not written." << nl
+            << exit(FatalError);
+    }
+
+    sdf::fit::RheologyFit fit = [&]()
+    {
+        try
+        {
+            return sdf::fit::fitRheology(points);
+        }
+        catch (const std::exception& err)
+        {
+            FatalErrorInFunction
+                << "The rheology fit failed: " << err.what() << nl
+                << "    constant/granularCoefficients is not written." << nl
+                << exit(FatalError);
+        }
+        throw;   // not reached
+    }();
+    for (const auto* fits : {&fit.muFits, &fit.phiFits})
+    {
+        for (const sdf::fit::FitResult& f : *fits)
+        {
+            Info<< "  " << f.law.name().c_str() << " = "
+                << f.law.formula().c_str() << ":";
+            for (const auto& q : f.parameters)
+            {
+                Info<< " " << q.name.c_str() << " " << fmt(q.value).c_str()
+                    << " +- " << fmt(q.standardError).c_str();
+            }
+            Info<< " (reduced chi2 " << fmt(f.reducedChiSquare).c_str()
+                << ", AIC " << fmt(f.aic).c_str() << ")" << nl;
+        }
+    }
+    Info<< "  model choice (AIC): mu(I) " << fit.muSelection.best().law.c_str()
+        << ", phi(I) " << fit.phiSelection.best().law.c_str()
+        << "; the solver's muI takes the muI and phiILinear fits" << nl;
+    if (points.size() < 6)
+    {
+        // relative sigma: the errors come from the scatter about the law
+        Info<< "  warning: " << label(points.size()) << " cells for three"
+            << " parameters: the errors rest on " << label(points.size()) - 3
+            << " degrees of freedom (give 6 or more inertial numbers, up to"
+            << " 0.5-1, so that I passes well beyond I_0)" << nl;
+    }
+
+    plotRheology
+    (
+        runTime.globalPath()/"postProcessing"/"calibration", points, fit,
+        settings.plot()
+    );
+
+    const fileName coeffFile
+    (
+        runTime.globalPath()/runTime.constant()/"granularCoefficients"
+    );
+    std::string text(coefficientsHeader);
+    if (isFile(coeffFile))
+    {
+        std::ifstream in(coeffFile);
+        std::stringstream existing;
+        existing << in.rdbuf();
+        text = existing.str();
+    }
+    try
+    {
+        sdf::store::writeTextAtomically
+        (
+            coeffFile,
+            withRheologyBlock(text, rheologyBlock(fit, d, rhoS, r.pressure))
+        );
+    }
+    catch (const std::exception& err)
+    {
+        FatalErrorInFunction << err.what() << nl << exit(FatalError);
+    }
+    Info<< "Written " << coeffFile << " (rheology)" << nl;
+}
+
+
+// ************************************************************************* //
