@@ -517,6 +517,25 @@ test_mui_bad_input()
         echo "${value};" > "$case/constant/muIOverrides"
         mui_expect_refusal "$case" "$value" "$expect" || return 1
     done
+    # rheology calibrated: an unknown source, a calibrated entry also given,
+    # no granularCoefficients in the case, one without the rheology
+    local props="$case/constant/granularProperties"
+    for entry in "unknown:Unknown 'rheology measured'; valid: (given calibrated)" "both:Entry 'mu_s' given with 'rheology calibrated'" "noFile:'rheology calibrated': there is no calibration in the case" "noRheology:has no sub-dictionary rheology (the rheology was not calibrated)"
+    do
+        value="${entry%%:*}"; expect="${entry#*:}"
+        mui_bad_case "$dir" || return 1
+        echo "rheology calibrated;" > "$case/constant/muIOverrides"
+        if [ "$value" != both ]
+        then
+            # (sed: foamDictionary would write the file without its #includeIfPresent)
+            sed -i -E '/^ *(mu_s|mu_d|I_0|packedFraction) /d' "$props"
+        fi
+        case "$value" in
+            unknown) echo "rheology measured;" > "$case/constant/muIOverrides" ;;
+            noRheology) printf 'FoamFile { version 2.0; format ascii; class dictionary; object granularCoefficients; }\nD { law powerLaw; }\n' > "$case/constant/granularCoefficients" ;;
+        esac
+        mui_expect_refusal "$case" "rheology $value" "$expect" io || return 1
+    done
     # The wall condition: an unknown model (OpenFOAM's selection lists the
     # valid types) and a wall friction angle outside [0, 90)
     for entry in "coulombFriction; wallFrictionAngle 20:Unknown patchField type coulombFriction" "coulombWallFriction; wallFrictionAngle 95:'wallFrictionAngle 95' on patch bed of U must lie in [0, 90)" "coulombWallFriction:Entry 'wallFrictionAngle' not found"

@@ -142,7 +142,7 @@ test_calibration_resume()
 test_calibration_bad_input()
 {
     local dir="$workRoot/calibrationBad" kind
-    local kinds="unknownCoefficient unknownLaw emptyPhi invertedT jammedPhi negativeT xOutside textStore foreignHdf5 truncatedStore settingsChanged drivingChanged finiteSizeAndParticles finiteSizeOneSize finiteSizeOrder badAttribution badDiffusivityEstimate nveMode shearedWithT shearedNoGammaDot drivenWithGammaDot strainWithTime drivenWithStrain shearedGammaDotZero pairUnknownSpecies pairSetsNothing pairRestitution"
+    local kinds="unknownCoefficient unknownLaw emptyPhi invertedT jammedPhi negativeT xOutside textStore foreignHdf5 truncatedStore settingsChanged drivingChanged finiteSizeAndParticles finiteSizeOneSize finiteSizeOrder badAttribution badDiffusivityEstimate nveMode shearedWithT shearedNoGammaDot drivenWithGammaDot strainWithTime drivenWithStrain shearedGammaDotZero pairUnknownSpecies pairSetsNothing pairRestitution rheologyIZero rheologyIAboveOne rheologyPressureZero rheologyPressureNegative rheologyNoPressure rheologyNoEntry rheologyNotCalibrated"
     for kind in $kinds
     do
         # the kinds that need an existing store make their own, now
@@ -192,6 +192,25 @@ test_calibration_bad_input()
                 expect="contact/pairs/fineCoarse' sets nothing" ;;
             pairRestitution) foamDictionary -entry contact/pairs -set "{ fineCoarse { species (fine coarse); restitution 1.4; } }" "$d" > /dev/null
                 expect="pair fine/coarse: restitution e = 1.4" ;;
+            rheologyIZero) foamDictionary -entry coefficients -set "(rheology)" "$d" > /dev/null
+                foamDictionary -entry rheology -set "{ inertialNumber (0 0.1); pressure 1000; }" "$d" > /dev/null
+                expect="Entry 'inertialNumber': value 0 is outside (0, 1]" ;;
+            rheologyIAboveOne) foamDictionary -entry coefficients -set "(D rheology)" "$d" > /dev/null
+                foamDictionary -entry rheology -set "{ inertialNumber (0.1 1.5); pressure 1000; }" "$d" > /dev/null
+                expect="Entry 'inertialNumber': value 1.5 is outside (0, 1]" ;;
+            rheologyPressureZero) foamDictionary -entry coefficients -set "(rheology)" "$d" > /dev/null
+                foamDictionary -entry rheology -set "{ inertialNumber (0.01 0.1); pressure 0; }" "$d" > /dev/null
+                expect="Entry 'pressure 0' must be a pressure > 0 Pa" ;;
+            rheologyPressureNegative) foamDictionary -entry coefficients -set "(rheology)" "$d" > /dev/null
+                foamDictionary -entry rheology -set "{ inertialNumber (0.01 0.1); pressure -500; }" "$d" > /dev/null
+                expect="Entry 'pressure -500' must be a pressure > 0 Pa" ;;
+            rheologyNoPressure) foamDictionary -entry coefficients -set "(rheology)" "$d" > /dev/null
+                foamDictionary -entry rheology -set "{ inertialNumber (0.01 0.1); }" "$d" > /dev/null
+                expect="Missing entry 'pressure' \[Pa\]" ;;
+            rheologyNoEntry) foamDictionary -entry coefficients -set "(rheology)" "$d" > /dev/null
+                expect="the sub-dictionary 'rheology' is missing" ;;
+            rheologyNotCalibrated) foamDictionary -entry rheology -set "{ inertialNumber (0.01 0.1); pressure 1000; }" "$d" > /dev/null
+                expect="Entry 'rheology' given, but 'coefficients'" ;;
             drivingChanged) cp "$store/constant/calibration.h5" "$dir/constant/"
                 foamDictionary -entry phi -set "(0.2 0.35 0.5)" "$d" > /dev/null
                 foamDictionary -entry mode -set stochastic "$d" > /dev/null; expect="other DEM settings" ;;

@@ -461,8 +461,10 @@ Foam::label Foam::runConditions
                         costLeft -= cost[waiting.index];
                     }
                 }
+                // (a cost left of round-off is none)
                 const double eta =
                     doneCost > 0 && ran < label(todo.size())
+                 && costLeft > 1e-9*totalCost
                   ? std::max(0.0, doneSeconds/doneCost*costLeft/busy)
                   : 0;
                 const sdf::dem::CellRunResult& r = f.result;

@@ -226,7 +226,12 @@ void Foam::fitRheologyAndReport
     std::map<std::string, std::pair<sdf::store::RheologyRecord, double>> stored;
     try
     {
-        for (const sdf::store::ConditionRecord& c : sdf::store::readStore(h5).conditions)
+        // no store: no cell was stored (each was left out)
+        const std::vector<sdf::store::ConditionRecord> conditions =
+            isFile(h5)
+          ? sdf::store::readStore(h5).conditions
+          : std::vector<sdf::store::ConditionRecord>();
+        for (const sdf::store::ConditionRecord& c : conditions)
         {
             if (c.rheology)
             {

@@ -24,6 +24,7 @@
 #include "modelCoeffs.H"
 #include "subCycle.H"
 #include "siloGeometry.H"
+#include "IOdictionary.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -87,6 +88,109 @@ Foam::scalar positiveEntry
             << Foam::exit(Foam::FatalIOError);
     }
     return value;
+}
+
+// The bulkFlow dictionary as the model reads it: with `rheology calibrated`
+// in muICoeffs, the entries of the sub-dictionary rheology of
+// constant/granularCoefficients (calibrateGranularMixture, coefficient
+// rheology) added to muICoeffs; with `rheology given` (default) as it is
+Foam::dictionary withCalibratedRheology
+(
+    const Foam::dictionary& dict,
+    const Foam::granularMixture& mixture
+)
+{
+    using namespace Foam;
+    const bool inSubDict = dict.isDict("muICoeffs");
+    dictionary result(dict);
+    dictionary& coeffs = inSubDict ? result.subDict("muICoeffs") : result;
+    const word source(coeffs.getOrDefault<word>("rheology", "given"));
+    if (source == "given")
+    {
+        return result;
+    }
+    if (source != "calibrated")
+    {
+        FatalIOErrorInFunction(coeffs)
+            << "Unknown 'rheology " << source << "'; valid: (given calibrated)"
+            << nl << "    given: mu_s, mu_d, I_0, packedFraction of muICoeffs;"
+            << " calibrated: those of the sub-dictionary rheology of"
+            << " constant/granularCoefficients (calibrateGranularMixture with"
+            << " coefficients (rheology))" << nl << exit(FatalIOError);
+    }
+    // What the calibration measures; the rest (regularised, etaMax, ...)
+    // stays the case's
+    const wordList calibrated
+    ({
+        "mu_s", "mu_d", "I_0", "packedFraction", "d", "rhoS"
+    });
+    for (const word& key : calibrated)
+    {
+        if (coeffs.found(key))
+        {
+            FatalIOErrorInFunction(coeffs)
+                << "Entry '" << key << "' given with 'rheology calibrated': the"
+                << " calibration (constant/granularCoefficients, sub-dictionary"
+                << " rheology) sets " << calibrated << nl << "    remove '"
+                << key << "' from muICoeffs, or set 'rheology given' to use the"
+                << " dictionary's values" << nl << exit(FatalIOError);
+        }
+    }
+    const fvMesh& mesh = mixture.mesh();
+    IOobject io
+    (
+        "granularCoefficients",
+        mesh.time().constant(),
+        mesh,
+        IOobject::MUST_READ,
+        IOobject::NO_WRITE,
+        false
+    );
+    if (!io.typeHeaderOk<IOdictionary>(true))
+    {
+        FatalIOErrorInFunction(coeffs)
+            << "'rheology calibrated': there is no calibration in the case: "
+            << io.objectPath() << " is missing" << nl
+            << "    run calibrateGranularMixture with 'coefficients (rheology);'"
+            << " and a rheology entry in system/calibrationDict"
+            << " (docs/user/calibration.md), or set 'rheology given'" << nl
+            << exit(FatalIOError);
+    }
+    const IOdictionary file(io);
+    if (!file.isDict("rheology"))
+    {
+        FatalIOErrorInFunction(file)
+            << "'rheology calibrated': " << file.objectPath() << " has no"
+            << " sub-dictionary rheology (the rheology was not calibrated);"
+            << " run calibrateGranularMixture with 'coefficients (rheology);'"
+            << " or set 'rheology given'" << nl << exit(FatalIOError);
+    }
+    const dictionary& rd = file.subDict("rheology");
+    for (const word& key : calibrated)
+    {
+        if (!rd.found(key))
+        {
+            FatalIOErrorInFunction(rd)
+                << "Entry '" << key << "' missing in the calibrated rheology;"
+                << " it holds " << rd.toc() << ", muI takes " << calibrated
+                << nl << exit(FatalIOError);
+        }
+        coeffs.add(key, rd.get<scalar>(key));
+    }
+    const scalarList IRange
+    (
+        rd.getOrDefault<scalarList>("IRange", scalarList({0, 0}))
+    );
+    Info<< "    muI: rheology calibrated (" << file.objectPath().name()
+        << ", " << rd.getOrDefault<label>("cells", 0) << " DEM cells over I "
+        << IRange.first() << "-" << IRange.last() << " at "
+        << rd.getOrDefault<scalar>("pressure", 0) << " Pa):";
+    for (const word& key : calibrated)
+    {
+        Info<< " " << key << " " << coeffs.get<scalar>(key);
+    }
+    Info<< nl;
+    return result;
 }
 
 } // End anonymous namespace
@@ -644,15 +748,19 @@ Foam::bulkFlowModels::muI::muI
     bulkFlowModel
     (
         typeName,
-        modelCoeffs::checked
+        withCalibratedRheology
         (
-            dict,
-            typeName,
-            {
-                "mu_s", "mu_d", "I_0", "regularised", "d", "rhoS",
-                "packedFraction", "etaMax", "pMin", "rhoAir", "muAir",
-                "outletPatches", "forces", "settlingVelocity"
-            }
+            modelCoeffs::checked
+            (
+                dict,
+                typeName,
+                {
+                    "rheology", "mu_s", "mu_d", "I_0", "regularised", "d",
+                    "rhoS", "packedFraction", "etaMax", "pMin", "rhoAir",
+                    "muAir", "outletPatches", "forces", "settlingVelocity"
+                }
+            ),
+            mixture
         ),
         mixture,
         true
