@@ -486,6 +486,31 @@ PY
 # 1e-12 gives 1.3e-12), nothing through the closed inlet, something
 # discharged, every species within [0, its total] and the total 0.6
 # alpha.granular (1e-8)
+# silo2D -fill with the rheology calibrated from the DEM (-rheology shipped:
+# ../resources/calibratedRheology's result): the solver reports the
+# calibrated coefficients it took, the species start and stay bounded by the
+# calibrated packed fraction and the mass balance closes as with the
+# glass-bead law
+test_silo2D_fill_calibrated_rheology()
+{
+    local tree="$workRoot/silo2DFillRheology"
+    rm -rf "$tree"; mkdir -p "$tree/silo3D"
+    cp -r "$projectDir/tutorials/silo2D" "$projectDir/tutorials/resources" "$tree/"
+    cp -r "$projectDir/tutorials/silo3D/muI" "$tree/silo3D/"
+    local dir="$tree/silo2D"
+    (cd "$dir" && ./Allrun -fill 0.5 -endTime 0.3 -writeInterval 0.1 -rheology shipped > log.Allrun 2>&1) \
+        || { tail -30 "$dir/log.Allrun"; return 1; }
+    local phi
+    phi=$(foamDictionary -entry rheology/packedFraction -value "$dir/constant/granularCoefficients") || return 1
+    grep "muI: rheology calibrated" "$dir/log.segregationDegradationFoam.fill" \
+        || { echo "the solver did not take the calibrated rheology"; return 1; }
+    grep -q "muI rheology: mu_s $(foamDictionary -entry rheology/mu_s -value "$dir/constant/granularCoefficients")," "$dir/log.segregationDegradationFoam.fill" \
+        || { grep "muI rheology" "$dir/log.segregationDegradationFoam.fill"; echo "mu_s is not the calibrated one"; return 1; }
+    python3 "$projectDir/tests/solver/silo/checkFill.py" "$dir" --tol-total 1e-9 || return 1
+    python3 -m sdfoam.fieldStats "$dir" bounds --tol 1e-8 --packed "$phi" || return 1
+    python3 -m sdfoam.fieldStats "$dir" inBulk --packed "$phi" --tol 1e-8
+}
+
 test_silo2D_fill()
 {
     local tree="$workRoot/silo2DFill"
