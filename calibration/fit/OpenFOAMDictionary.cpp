@@ -169,6 +169,23 @@ void writeShearScaling(std::ostream& os, const ShearScaling& s)
 
 } // namespace
 
+std::string coefficientsFileHeader()
+{
+    return
+        "/*--------------------------------*- C++ -*----------------------------------*\\\n"
+        "  granularCoefficients: constitutive laws fitted to DEM results (sdf::fit)\n"
+        "\\*---------------------------------------------------------------------------*/\n"
+        "FoamFile\n"
+        "{\n"
+        "    version     2.0;\n"
+        "    format      ascii;\n"
+        "    class       dictionary;\n"
+        "    location    \"constant\";\n"
+        "    object      granularCoefficients;\n"
+        "}\n";
+}
+
+
 void writeOpenFOAMDictionary
 (
     std::ostream& os,
@@ -203,18 +220,7 @@ void writeOpenFOAMDictionary
     // Format everything in a local stream: the caller's stream flags stay as they were.
     std::ostringstream text;
     text << std::setprecision(10);
-    text <<
-        "/*--------------------------------*- C++ -*----------------------------------*\\\n"
-        "  granularCoefficients: constitutive laws fitted to DEM results (sdf::fit)\n"
-        "\\*---------------------------------------------------------------------------*/\n"
-        "FoamFile\n"
-        "{\n"
-        "    version     2.0;\n"
-        "    format      ascii;\n"
-        "    class       dictionary;\n"
-        "    location    \"constant\";\n"
-        "    object      granularCoefficients;\n"
-        "}\n"
+    text << coefficientsFileHeader() <<
         "// phi: total solids fraction; x: coarse fraction of the solids;\n"
         "// T: granular temperature, SUM of the three components [m2/s2] (T1 = T/3);\n"
         "// d: diameter of the species the coefficient belongs to [m].\n"

@@ -30,6 +30,10 @@ struct CalibratedCoefficient
     std::vector<std::pair<std::string, std::string>> provenance{};
 };
 
+//- The banner and FoamFile header of constant/granularCoefficients (object
+//  granularCoefficients, location constant), ending with its closing brace's line.
+std::string coefficientsFileHeader();
+
 //- Writes the FoamFile header and one sub-dictionary per coefficient, and for
 //  a sheared calibration (shear not null) the sub-dictionary shearScaling: the
 //  mean C = D/(gammaDot dMean^2) of the fines (the solver's shearRate

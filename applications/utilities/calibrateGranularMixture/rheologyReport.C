@@ -11,6 +11,7 @@
 #include "OSspecific.H"
 
 #include "fit/RheologyLaws.hpp"
+#include "fit/OpenFOAMDictionary.hpp"
 #include "store/Store.hpp"
 
 #include <cmath>
@@ -26,22 +27,6 @@ using numberText::fmt;
 
 namespace
 {
-
-//- The header of a granularCoefficients that holds only the rheology
-const char* const coefficientsHeader =
-    "/*--------------------------------*- C++ -*----------------------------------*\\\n"
-    "  granularCoefficients: constitutive laws fitted to DEM results (sdf::fit)\n"
-    "\\*---------------------------------------------------------------------------*/\n"
-    "FoamFile\n"
-    "{\n"
-    "    version     2.0;\n"
-    "    format      ascii;\n"
-    "    class       dictionary;\n"
-    "    location    \"constant\";\n"
-    "    object      granularCoefficients;\n"
-    "}\n\n"
-    "// ************************************************************************* //\n";
-
 
 //- The sub-dictionary rheology: the muI entries with their errors, what I
 //  means (d, rho_s, pressure), the I range, the model choices
@@ -343,7 +328,12 @@ void Foam::fitRheologyAndReport
     (
         runTime.globalPath()/runTime.constant()/"granularCoefficients"
     );
-    std::string text(coefficientsHeader);
+    // (a granularCoefficients of the rheology alone: the header, the block)
+    std::string text
+    (
+        sdf::fit::coefficientsFileHeader() + "\n"
+        "// ************************************************************************* //\n"
+    );
     if (isFile(coeffFile))
     {
         std::ifstream in(coeffFile);

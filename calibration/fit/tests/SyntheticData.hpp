@@ -30,7 +30,7 @@ inline std::vector<Condition> seedLikeEnvelope()
             {
                 for (const double d : {1e-3, 2e-3, 4e-3})
                 {
-                    conditions.push_back(Condition{phi, x, T, d, std::nullopt});
+                    conditions.push_back(Condition{phi, x, T, d, std::nullopt, std::nullopt});
                 }
             }
         }

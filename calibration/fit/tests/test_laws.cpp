@@ -14,7 +14,7 @@ TEST(Laws, SeedPowerLawWithThePapersValuesIsEq15)
 {
     Eigen::VectorXd p(4);
     p << 6.0, 1.0, 1.0, -1.5;
-    const Condition c{0.3, 0.2, 0.05, 1e-3, std::nullopt};
+    const Condition c{0.3, 0.2, 0.05, 1e-3, std::nullopt, std::nullopt};
     EXPECT_NEAR(SeedPowerLaw{}.evaluate(c, p), 6.0 * 1.2 * 0.05 * std::pow(0.3, -1.5), 1e-14);
 }
 
@@ -25,7 +25,7 @@ TEST(Laws, KineticTheoryGroupsReducesToChapmanEnskog)
     p << std::sqrt(M_PI) / 16.0, 0.0;
     for (const double phi : {0.05, 0.3, 0.55})
     {
-        const Condition c{phi, 0.4, 0.03, 2e-3, std::nullopt};
+        const Condition c{phi, 0.4, 0.03, 2e-3, std::nullopt, std::nullopt};
         const double g0 = (1.0 - phi / 2.0) / std::pow(1.0 - phi, 3);
         const double enskog = 2e-3 * std::sqrt(M_PI * 0.03 / 3.0) / (16.0 * phi * g0);
         EXPECT_NEAR(KineticTheoryGroupsLaw{}.evaluate(c, p) / enskog, 1.0, 1e-13);
@@ -38,7 +38,7 @@ TEST(Laws, SievingPowerLawUnitsFollowTheDiameterPower)
 {
     Eigen::VectorXd p(3);
     p << 0.7, -1.2, 0.5;
-    const Condition c{0.4, 0.2, 0.3, 3e-3, std::nullopt};
+    const Condition c{0.4, 0.2, 0.3, 3e-3, std::nullopt, std::nullopt};
     const double common = 0.7 * std::sqrt(0.1) * std::pow(0.4, -1.2) * 1.1;
     EXPECT_NEAR(SievingPowerLaw{}.evaluate(c, p), common * 3e-3, 1e-15);
     EXPECT_NEAR(SievingPowerLaw{2}.evaluate(c, p), common * 9e-6, 1e-18);
@@ -52,8 +52,8 @@ namespace
 void expectGradientMatchesFiniteDifferences(const ConstitutiveLaw& law, Eigen::VectorXd p)
 {
     for (const Condition& c :
-         {Condition{0.15, 0.2, 2e-3, 1e-3, std::nullopt},
-          Condition{0.45, 0.4, 8e-2, 4e-3, std::nullopt}})
+         {Condition{0.15, 0.2, 2e-3, 1e-3, std::nullopt, std::nullopt},
+          Condition{0.45, 0.4, 8e-2, 4e-3, std::nullopt, std::nullopt}})
     {
         const Eigen::VectorXd analytic = law.gradient(c, p);
         ASSERT_EQ(analytic.size(), p.size());
@@ -98,7 +98,7 @@ TEST(Laws, CollisionFrequencyGroupsReducesToEnskog)
     for (const double phi : {0.05, 0.3, 0.55})
     {
         const double d = 2e-3, T = 0.03;
-        const Condition c{phi, 0.4, T, d, std::nullopt};
+        const Condition c{phi, 0.4, T, d, std::nullopt, std::nullopt};
         const double n = 6.0 * phi / (M_PI * d * d * d);
         const double enskog = 4.0 * n * d * d * carnahanStarlingG0(phi) * std::sqrt(M_PI * T / 3.0);
         EXPECT_NEAR(CollisionFrequencyGroupsLaw{}.evaluate(c, p) / enskog, 1.0, 1e-13);
@@ -111,7 +111,7 @@ TEST(Laws, ImpactEnergyGroupsIsHalfT1ForAMaxwellianGas)
     // <E> = m T1 for equal grains (dem.impact_energy), W = E/(2 m): Wmean = T1/2
     Eigen::VectorXd p(2);
     p << 0.5, 0.0;
-    const Condition c{0.05, 0.0, 0.3, 1e-3, std::nullopt};
+    const Condition c{0.05, 0.0, 0.3, 1e-3, std::nullopt, std::nullopt};
     EXPECT_NEAR(ImpactEnergyGroupsLaw{}.evaluate(c, p), 0.05, 1e-15);
     p << 0.4, -0.5;
     EXPECT_NEAR(ImpactEnergyGroupsLaw{}.evaluate(c, p), 0.4 * 0.1 / std::sqrt(0.05), 1e-14);
@@ -122,7 +122,7 @@ TEST(Laws, SievingCompositionPowerLawHandValue)
 {
     Eigen::VectorXd p(3);
     p << 0.7, -1.2, 3.3;
-    const Condition c{0.4, 0.2, 0.3, 3e-3, std::nullopt};
+    const Condition c{0.4, 0.2, 0.3, 3e-3, std::nullopt, std::nullopt};
     const double expected = 0.7 * 3e-3 * std::sqrt(0.1) * std::pow(0.4, -1.2) * std::pow(0.2, 3.3);
     EXPECT_NEAR(SievingCompositionPowerLaw{}.evaluate(c, p) / expected, 1.0, 1e-13);
     EXPECT_EQ(ConstitutiveLaw(SievingCompositionPowerLaw{}).name(), "sievingCompositionPowerLaw");
@@ -148,7 +148,7 @@ TEST(Laws, LawFromNameBuildsEveryLawAndRefusesOthers)
     }
     Eigen::VectorXd p(3);
     p << 0.7, -1.2, 3.3;
-    const Condition c{0.4, 0.2, 0.3, 3e-3, std::nullopt};
+    const Condition c{0.4, 0.2, 0.3, 3e-3, std::nullopt, std::nullopt};
     EXPECT_EQ(lawFromName("sievingPowerLaw", 2).evaluate(c, p), SievingPowerLaw{2}.evaluate(c, p));
     try
     {
@@ -167,7 +167,7 @@ TEST(Laws, FormulasAreTheLawsEvaluations)
 {
     // The header-only formulas (used by the solver's models) and the fitted
     // laws are one definition: bitwise equal
-    const Condition c{0.45, 0.3, 0.02, 2e-3, std::nullopt};
+    const Condition c{0.45, 0.3, 0.02, 2e-3, std::nullopt, std::nullopt};
     Eigen::VectorXd seed(4), kinetic(2), sieving(3);
     seed << 6.0, 1.0, 1.0, -1.5;
     kinetic << 0.12, 0.4;

@@ -184,7 +184,7 @@ TEST(Recovery, BreakageRateFromTheFittedLaws)
     {
         for (const double T : {1e-3, 1e-1})
         {
-            const Condition c{phi, 0.3, T, 1e-3, std::nullopt};
+            const Condition c{phi, 0.3, T, 1e-3, std::nullopt, std::nullopt};
             const double omegaTrue = CollisionFrequencyGroupsLaw{}.evaluate(c, collisionFrequencyTruth());
             const double WmeanTrue = ImpactEnergyGroupsLaw{}.evaluate(c, impactEnergyTruth());
             // fMat 2 kg/(J m) and a threshold of twice the state's true mean impact
