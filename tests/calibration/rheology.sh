@@ -176,3 +176,35 @@ test_calibration_rheology_gas()
     fi
     echo "4 gas cells reported, none stored, the fit refused"
 }
+
+# Spread over 2 MPI ranks (-parallel) the rheology cells are dealt 2 + 2 and
+# the master merges the processor stores: the stored cells are those of a
+# serial run, bitwise (timing groups aside). -noFit: 4 cells over I 0.16-0.3
+# do not identify mu_d and I_0 (the fit says so); the fit is
+# calibrateAndUse's
+test_calibration_rheology_parallel()
+{
+    local ref="$workRoot/calibrationRheologySerial" dir="$workRoot/calibrationRheologyParallel" d
+    for d in "$ref" "$dir"
+    do
+        rheology_case "$d" "0.16 0.2 0.25 0.3" "equilibrationStrain 6; samplingStrain 8;"
+        # one cell at a time in the serial run: its conditions must not
+        # depend on how many run at once either
+        foamDictionary -entry concurrentConditions -set 1 "$d/system/calibrationDict" > /dev/null
+    done
+    calibrateGranularMixture -case "$ref" -noFit > "$ref/log" 2>&1 || { tail -20 "$ref/log"; return 1; }
+    mpirun --allow-run-as-root --oversubscribe -np 2 calibrateGranularMixture -parallel -case "$dir" -noFit > "$dir/log" 2>&1 \
+        || { tail -20 "$dir/log"; return 1; }
+    local r0 r1
+    r0=$(grep -c "^\[0\] condition .* done in" "$dir/log")
+    r1=$(grep -c "^\[1\] condition .* done in" "$dir/log")
+    echo "rank 0 ran $r0, rank 1 ran $r1 rheology cells"
+    [ "$r0" -eq 2 ] && [ "$r1" -eq 2 ] || { echo "cells not spread 2 + 2 over the ranks"; return 1; }
+    grep -q "Merged 4 conditions of 2 processor stores" "$dir/log" || { grep -i merged "$dir/log"; echo "no merge of 4 conditions"; return 1; }
+    dump_conditions "$ref/constant/calibration.h5" > "$ref/conditions.txt"
+    dump_conditions "$dir/constant/calibration.h5" > "$dir/conditions.txt"
+    [ "$(grep -c 'GROUP "rheology"' "$ref/conditions.txt")" -eq 4 ] || { echo "the serial store lacks its 4 rheology groups"; return 1; }
+    diff -q "$ref/conditions.txt" "$dir/conditions.txt" > /dev/null \
+        || { echo "cells differ from the serial run:"; diff "$ref/conditions.txt" "$dir/conditions.txt" | head -20; return 1; }
+    echo "4 cells on 2 ranks: the store ($(wc -l < "$dir/conditions.txt") dump lines) identical to the serial run's"
+}
