@@ -91,13 +91,18 @@ PY
     grep -q "^DEM: 0 conditions run and stored, 5 taken from" "$dir/log.2" || { grep "^DEM" "$dir/log.2"; echo "the rerun ran cells"; return 1; }
     diff -q "$coeffs" "$dir/granularCoefficients.1" > /dev/null || { diff "$coeffs" "$dir/granularCoefficients.1"; echo "the rerun changed the coefficients"; return 1; }
 
-    # A transport calibration afterwards keeps the rheology, and adds D
+    # D added to the same calibration: its conditions run beside the stored
+    # rheology cells, which are reused (the transport cells' run controls
+    # are not part of the rheology cells' settings)
     local d="$dir/system/calibrationDict"
+    foamDictionary -entry coefficients -set "(D rheology)" "$d" > /dev/null
+    calibrateGranularMixture -case "$dir" > "$dir/log.3" 2>&1 || { tail -20 "$dir/log.3"; return 1; }
+    grep -q "^DEM: 8 conditions run and stored, 5 taken from" "$dir/log.3" \
+        || { grep "^DEM" "$dir/log.3"; echo "the rheology cells were not reused beside D's 8 conditions"; return 1; }
+    # and a transport calibration alone afterwards keeps the rheology
     foamDictionary -entry coefficients -set "(D)" "$d" > /dev/null
     foamDictionary -entry rheology -remove "$d" > /dev/null
-    foamDictionary -entry particles -set 200 "$d" > /dev/null
-    foamDictionary -entry timeStep -set 0 "$d" > /dev/null
-    calibrateGranularMixture -case "$dir" > "$dir/log.3" 2>&1 || { tail -20 "$dir/log.3"; return 1; }
+    calibrateGranularMixture -case "$dir" > "$dir/log.4" 2>&1 || { tail -20 "$dir/log.4"; return 1; }
     foamDictionary -entry D/law -value "$coeffs" > /dev/null || { echo "no D after the transport calibration"; return 1; }
     [ "$(foamDictionary -entry rheology/mu_s -value "$coeffs")" = "${values[0]}" ] \
         || { echo "the transport calibration lost the rheology"; cat "$coeffs"; return 1; }

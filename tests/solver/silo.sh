@@ -477,15 +477,6 @@ PY
     done
 }
 
-# The tutorial's fill stage (Allrun -fill 0.5 -endTime 0.3: the empty flat
-# silo fed through the inlet carved from its top for 0.5 s, then the inlet
-# closed and the outlet opened): per species, the silo at the end = what
-# entered - what left through the outlet and the top, over both stages
-# (tests/solver/silo/checkFill.py: 1e-8 of the fed; the solids' 1e-9:
-# 7.3e-11 measured, the species solved to silo2D's 1e-10 where silo3D's
-# 1e-12 gives 1.3e-12), nothing through the closed inlet, something
-# discharged, every species within [0, its total] and the total 0.6
-# alpha.granular (1e-8)
 # silo2D -fill with the rheology calibrated from the DEM (-rheology shipped:
 # ../resources/calibratedRheology's result): the solver reports the
 # calibrated coefficients it took, the species start and stay bounded by the
@@ -511,6 +502,15 @@ test_silo2D_fill_calibrated_rheology()
     python3 -m sdfoam.fieldStats "$dir" inBulk --packed "$phi" --tol 1e-8
 }
 
+# The tutorial's fill stage (Allrun -fill 0.5 -endTime 0.3: the empty flat
+# silo fed through the inlet carved from its top for 0.5 s, then the inlet
+# closed and the outlet opened): per species, the silo at the end = what
+# entered - what left through the outlet and the top, over both stages
+# (tests/solver/silo/checkFill.py: 1e-8 of the fed; the solids' 1e-9:
+# 7.3e-11 measured, the species solved to silo2D's 1e-10 where silo3D's
+# 1e-12 gives 1.3e-12), nothing through the closed inlet, something
+# discharged, every species within [0, its total] and the total 0.6
+# alpha.granular (1e-8)
 test_silo2D_fill()
 {
     local tree="$workRoot/silo2DFill"

@@ -447,7 +447,13 @@ Foam::caseEnvelope Foam::deriveEnvelope
         if (dict.found(key) && !(key == rate && !haveRate))
         {
             Info<< "-fromCase: entry '" << key.c_str() << "' of "
-                << dict.name() << " is overridden by the case" << nl;
+                << dict.name() << " is overridden by the case"
+                << (
+                       key == "coefficients" && settings.calibratesRheology()
+                     ? " (its rheology is kept: the rheology entry's cells)"
+                     : ""
+                   )
+                << nl;
         }
     }
     Info<< endl;

@@ -21,6 +21,9 @@
 #include <iomanip>
 #include <map>
 #include <sstream>
+#include <utility>
+#include <vector>
+#include <algorithm>
 
 using namespace Foam;
 using numberText::fmt;
@@ -125,41 +128,81 @@ void plotRheology
 } // End anonymous namespace
 
 
-std::string Foam::rheologyBlockOf(const std::string& text)
+namespace
 {
-    // the block as we write it: an optional comment run, "rheology", "{",
-    // ..., "}" at the line's start
-    std::istringstream in(text);
+
+//- The lines of a text, without their line ends ('\n', and a '\r' before it)
+std::vector<std::string> linesOf(const std::string& text)
+{
     std::vector<std::string> lines;
+    std::istringstream in(text);
     for (std::string line; std::getline(in, line);)
     {
+        if (!line.empty() && line.back() == '\r') line.pop_back();
         lines.push_back(line);
     }
-    for (std::size_t i = 0; i + 1 < lines.size(); ++i)
+    return lines;
+}
+
+//- A line without the blanks at its end
+std::string trimmed(std::string line)
+{
+    while (!line.empty() && (line.back() == ' ' || line.back() == '\t'))
     {
-        if (lines[i] != "rheology" || lines[i + 1] != "{")
+        line.pop_back();
+    }
+    return line;
+}
+
+//- The lines [first, last] of the rheology block as written ("rheology",
+//  "{" or "rheology {", ..., "}" at the line's start, with the comment run
+//  just before it); first > last if there is none
+std::pair<std::size_t, std::size_t> rheologyLines
+(
+    const std::vector<std::string>& lines
+)
+{
+    for (std::size_t i = 0; i < lines.size(); ++i)
+    {
+        const std::string head(trimmed(lines[i]));
+        const bool sameLine = head == "rheology {" || head == "rheology{";
+        if (!sameLine && !(head == "rheology" && i + 1 < lines.size()
+                          && trimmed(lines[i + 1]) == "{"))
         {
             continue;
         }
         std::size_t first = i;
-        while (first > 0 && lines[first - 1].rfind("// ", 0) == 0
-            && lines[first - 1].rfind("// *", 0) != 0)
+        while
+        (
+            first > 0 && lines[first - 1].rfind("// ", 0) == 0
+         && lines[first - 1].rfind("// *", 0) != 0
+        )
         {
             --first;
         }
-        std::size_t last = i + 1;
-        while (last < lines.size() && lines[last] != "}")
+        std::size_t last = sameLine ? i + 1 : i + 2;
+        while (last < lines.size() && trimmed(lines[last]) != "}")
         {
             ++last;
         }
-        std::string block;
-        for (std::size_t k = first; k <= last && k < lines.size(); ++k)
-        {
-            block += lines[k] + "\n";
-        }
-        return block + "\n";
+        return {first, std::min(last, lines.size() - 1)};
     }
-    return std::string();
+    return {1, 0};
+}
+
+} // End anonymous namespace
+
+
+std::string Foam::rheologyBlockOf(const std::string& text)
+{
+    const std::vector<std::string> lines(linesOf(text));
+    const auto [first, last] = rheologyLines(lines);
+    std::string block;
+    for (std::size_t k = first; k <= last && first <= last; ++k)
+    {
+        block += lines[k] + "\n";
+    }
+    return block.empty() ? block : block + "\n";
 }
 
 
@@ -169,33 +212,33 @@ std::string Foam::withRheologyBlock
     const std::string& block
 )
 {
-    std::string rest(text);
-    const std::string old(rheologyBlockOf(text));
-    if (!old.empty())
+    std::vector<std::string> lines(linesOf(text));
+    const auto [first, last] = rheologyLines(lines);
+    if (first <= last)
     {
-        // the block as returned, less its trailing blank line if absent
-        std::size_t at = rest.find(old);
-        std::size_t length = old.size();
-        if (at == std::string::npos)
+        // the block and the blank line after it
+        std::size_t end = last + 1;
+        if (end < lines.size() && trimmed(lines[end]).empty()) ++end;
+        lines.erase(lines.begin() + first, lines.begin() + end);
+    }
+    // before the closing "// ***" line, else at the end
+    std::size_t at = lines.size();
+    for (std::size_t k = lines.size(); k-- > 0;)
+    {
+        if (lines[k].rfind("// ****", 0) == 0)
         {
-            length = old.size() - 1;
-            at = rest.find(old.substr(0, length));
-        }
-        if (at != std::string::npos)
-        {
-            rest.erase(at, length);
+            at = k;
+            break;
         }
     }
-    if (block.empty())
+    std::string out;
+    for (std::size_t k = 0; k < lines.size(); ++k)
     {
-        return rest;
+        if (k == at) out += block;
+        out += lines[k] + "\n";
     }
-    const std::size_t end = rest.rfind("// ****");
-    if (end == std::string::npos)
-    {
-        return rest + block;
-    }
-    return rest.substr(0, end) + block + rest.substr(end);
+    if (at == lines.size()) out += block;
+    return out;
 }
 
 
@@ -228,8 +271,8 @@ void Foam::fitRheologyAndReport
     {
         FatalErrorInFunction
             << "Reading the rheology cells failed: " << err.what() << nl
-            << "    constant/granularCoefficients is not written." << nl
-            << exit(FatalError);
+            << "    The rheology of constant/granularCoefficients is not"
+            << " written." << nl << exit(FatalError);
     }
 
     std::vector<sdf::fit::RheologyPoint> points;
@@ -269,10 +312,12 @@ void Foam::fitRheologyAndReport
             << label(conds.size()) << " cells at sigma_yy " << r.pressure
             << " Pa are." << nl
             << "    Give more inertial numbers within the dense regime"
-            << " (rheology/inertialNumber, e.g. 0.003-0.5), or longer runs"
-            << " (rheology/equilibrationStrain, samplingStrain) for cells"
-            << " that were not steady." << nl
-            << "    constant/granularCoefficients is not written." << nl
+            << " (rheology/inertialNumber, e.g. 0.01-0.4). Cells that were"
+            << " not steady need longer strains or more grains: both are part"
+            << " of the stored cells' settings, so calibrate them in a fresh"
+            << " store (move constant/calibration.h5 away)." << nl
+            << "    The rheology of constant/granularCoefficients is not"
+            << " written." << nl
             << exit(FatalError);
     }
 
@@ -286,11 +331,28 @@ void Foam::fitRheologyAndReport
         {
             FatalErrorInFunction
                 << "The rheology fit failed: " << err.what() << nl
-                << "    constant/granularCoefficients is not written." << nl
-                << exit(FatalError);
+                << "    The rheology of constant/granularCoefficients is not"
+                << " written." << nl << exit(FatalError);
         }
         throw;   // not reached
     }();
+    // what muI accepts (it would refuse the case later, naming muICoeffs)
+    {
+        const scalar muS = fit.muI().parameter("mu_s").value;
+        const scalar muD = fit.muI().parameter("mu_d").value;
+        const scalar I0 = fit.muI().parameter("I_0").value;
+        const scalar phiC = fit.phiILinear().parameter("phi_c").value;
+        if (!(muS > 0 && muD > muS && I0 > 0 && phiC > 0 && phiC <= 1))
+        {
+            FatalErrorInFunction
+                << "The fitted rheology is not a muI law: mu_s " << muS
+                << ", mu_d " << muD << ", I_0 " << I0 << ", phi_c " << phiC
+                << " (muI needs mu_d > mu_s > 0, I_0 > 0, 0 < phi_c <= 1):"
+                << " mu does not grow with I over the cells" << nl
+                << "    The rheology of constant/granularCoefficients is not"
+                << " written." << nl << exit(FatalError);
+        }
+    }
     for (const auto* fits : {&fit.muFits, &fit.phiFits})
     {
         for (const sdf::fit::FitResult& f : *fits)

@@ -208,6 +208,7 @@ Foam::calibrationSettings::calibrationSettings
     fitMaxIterations_(2000),
     plot_(true),
     concurrentConditions_(0),
+    transportRunControls_(true),
     equilibrationStrain_(0),
     maxEquilibrationStrain_(0),
     samplingStrain_(0)
@@ -359,14 +360,18 @@ Foam::calibrationSettings::calibrationSettings
     readStrains(dict);
     const bool rheologyOnly =
         calibratesRheology() && transportCoefficients().empty();
-    if (samplingStrain_ > 0 || (rheologyOnly && !dict.found("samplingTime")))
+    transportRunControls_ = !(rheologyOnly && !dict.found("samplingTime"));
+    if (samplingStrain_ > 0 || !transportRunControls_)
     {
         // The run controls require samplingTime; with samplingStrain (and
         // no time entries, readStrains) it is set per condition
         // (conditionSettings), and the rheology cells take theirs from
         // rheology/samplingStrain: this value is never run
         dictionary runControls(dict);
-        runControls.add("samplingTime", max(samplingStrain_, scalar(1)));
+        runControls.add
+        (
+            "samplingTime", samplingStrain_ > 0 ? samplingStrain_ : scalar(1)
+        );
         demDictionary::readRunControls(runControls, b);
     }
     else
@@ -657,6 +662,16 @@ sdf::dem::CellRunSettings Foam::calibrationSettings::conditionSettings
     const label particles
 ) const
 {
+    if (!transportRunControls_)
+    {
+        // (the runDEM policy of a tabulated model reads this dictionary too)
+        FatalIOErrorInFunction(dict_)
+            << "A transport cell (phi " << phi << ", x " << x << ") asked of"
+            << " a calibrationDict that calibrates only the rheology and has"
+            << " no 'samplingTime': give the transport cells' run controls"
+            << " (samplingTime, equilibrationTime, ...)" << nl
+            << exit(FatalIOError);
+    }
     sdf::dem::CellRunSettings s = base_;
     if (particles > 0)
     {
@@ -728,10 +743,11 @@ std::string Foam::calibrationSettings::rheologySettingsKey() const
 {
     sdf::dem::CellRunSettings s = rheologyCellSettings(1, 0, "");
     // the times follow from the strains and I (in the name): the key names
-    // the strains
-    s.equilibrationTime = base_.equilibrationTime;
-    s.maxEquilibrationTime = base_.maxEquilibrationTime;
-    s.samplingTime = base_.samplingTime;
+    // the strains, and not the transport cells' times (a transport
+    // calibration beside it must not invalidate the stored rheology)
+    s.equilibrationTime = 0;
+    s.maxEquilibrationTime = 0;
+    s.samplingTime = 0;
     const rheologyEnvelope& r = rheology_;
     return
         sdf::store::settingsKey(s, contactModel_)
