@@ -183,19 +183,21 @@ int main(int argc, char *argv[])
         << " (coarse, d = " << settings.coarse().d << "), store " << h5 << nl;
     if (!transportConds.empty())
     {
-    Info<< "Transport: "
-        << label(transportConds.size()) << " conditions (" << envelope.phi.size()
-        << " phi x " << envelope.x.size() << " x x " << envelope.rates().size()
-        << " " << settings.rateName() << " x " << settings.replicas().size()
-        << " replicas"
-        << (
-               settings.finiteSizeParticles().empty()
-             ? std::string()
-             : " x " + std::to_string(settings.finiteSizeParticles().size())
-             + " cell sizes"
-           ).c_str()
-        << (settings.sheared() ? ", sheared cells (Lees-Edwards)" : "")
-        << ")" << nl;
+        Info<< "Transport: "
+            << label(transportConds.size()) << " conditions ("
+            << envelope.phi.size() << " phi x " << envelope.x.size()
+            << " x x " << envelope.rates().size() << " "
+            << settings.rateName() << " x " << settings.replicas().size()
+            << " replicas"
+            << (
+                   settings.finiteSizeParticles().empty()
+                 ? std::string()
+                 : " x "
+                 + std::to_string(settings.finiteSizeParticles().size())
+                 + " cell sizes"
+               ).c_str()
+            << (settings.sheared() ? ", sheared cells (Lees-Edwards)" : "")
+            << ")" << nl;
     }
     if (!rheologyConds.empty())
     {
