@@ -127,11 +127,10 @@ int main(int argc, char** argv)
         for (std::size_t k = 0; k < inertialNumbers.size(); ++k)
         {
             const double I = inertialNumbers[k];
-            CellRunSettings s = base;
-            s.simulation.shearRate = I*std::sqrt(p/rho)/d;
-            s.equilibrationTime = equilibrationStrain/s.simulation.shearRate;
-            s.maxEquilibrationTime = 3*s.equilibrationTime;
-            s.samplingTime = samplingStrain/s.simulation.shearRate;
+            CellRunSettings s = atInertialNumber
+            (
+                base, I, equilibrationStrain, 3*equilibrationStrain, samplingStrain
+            );
             s.label = "I " + std::to_string(I);
             CellRunResult r;
             try
@@ -186,35 +185,7 @@ int main(int argc, char** argv)
             });
         }
         const sdf::fit::RheologyFit fit = sdf::fit::fitRheology(points);
-        if (points.size() < 6)
-        {
-            // relative sigma: the errors come from the scatter about the law, with
-            // points - 3 degrees of freedom
-            std::printf
-            (
-                "warning: %zu cells for three parameters: the errors rest on %zu degrees of"
-                " freedom; mu_d and I_0 are extrapolated unless I reaches well past I_0"
-                " (give 6 or more cells, up to I 0.5-1)\n", points.size(), points.size() - 3
-            );
-        }
-        for (const auto* fits : {&fit.muFits, &fit.phiFits})
-        {
-            for (const sdf::fit::FitResult& f : *fits)
-            {
-                std::printf("%s = %s:", f.law.name().c_str(), f.law.formula().c_str());
-                for (const auto& q : f.parameters)
-                {
-                    std::printf(" %s %.5g +- %.2g", q.name.c_str(), q.value, q.standardError);
-                }
-                std::printf(" (reduced chi2 %.3g, AIC %.2f)\n", f.reducedChiSquare, f.aic);
-            }
-        }
-        std::printf
-        (
-            "model choice (AIC): mu(I) %s (delta of the other %.2f), phi(I) %s (delta %.2f)\n",
-            fit.muSelection.best().law.c_str(), fit.muSelection.ranking.back().delta,
-            fit.phiSelection.best().law.c_str(), fit.phiSelection.ranking.back().delta
-        );
+        std::cout << sdf::fit::rheologyFitSummary(fit);
         const std::string entries = sdf::fit::muICoefficientEntries(fit);
         std::ofstream(output + "-muICoeffs") << entries;
         std::cout << "muICoeffs entries (written " << output << "-muICoeffs, table "

@@ -177,6 +177,52 @@ RheologyFit fitRheology(const std::vector<RheologyPoint>& points)
     return fit;
 }
 
+std::string rheologyFitSummary(const RheologyFit& fit)
+{
+    std::string out;
+    char text[400];
+    for (const auto* fits : {&fit.muFits, &fit.phiFits})
+    {
+        for (const FitResult& f : *fits)
+        {
+            out += f.law.name() + " = " + f.law.formula() + ":";
+            for (const FittedParameter& q : f.parameters)
+            {
+                std::snprintf(text, sizeof text, " %s %.5g +- %.2g", q.name.c_str(), q.value,
+                              q.standardError);
+                out += text;
+            }
+            std::snprintf(text, sizeof text, " (reduced chi2 %.3g, AIC %.2f)\n",
+                          f.reducedChiSquare, f.aic);
+            out += text;
+        }
+    }
+    std::snprintf
+    (
+        text, sizeof text,
+        "model choice (AIC): mu(I) %s (delta of the other %.2f), phi(I) %s (delta %.2f)\n",
+        fit.muSelection.best().law.c_str(), fit.muSelection.ranking.back().delta,
+        fit.phiSelection.best().law.c_str(), fit.phiSelection.ranking.back().delta
+    );
+    out += text;
+    const std::size_t points = fit.muI().points;
+    if (points < 6)
+    {
+        // relative sigma: the errors come from the scatter about the law, with
+        // points - 3 degrees of freedom
+        std::snprintf
+        (
+            text, sizeof text,
+            "warning: %zu cells for three parameters: the errors rest on %zu degrees of"
+            " freedom; mu_d and I_0 are extrapolated unless I reaches well past I_0"
+            " (give 6 or more cells, up to I 0.5-1)\n", points, points - 3
+        );
+        out += text;
+    }
+    return out;
+}
+
+
 std::string muICoefficientEntries(const RheologyFit& fit)
 {
     std::ostringstream out;

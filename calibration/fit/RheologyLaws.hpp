@@ -102,6 +102,11 @@ struct RheologyFit
 //  error <= 0) and FitFailure when the muI or phiILinear fit fails.
 RheologyFit fitRheology(const std::vector<RheologyPoint>& points);
 
+//- What the fits say, one line each: every law with its parameters, standard errors,
+//  reduced chi-square and AIC; the model choices with the other law's AIC difference;
+//  with fewer than 6 points, a warning that the errors rest on few degrees of freedom.
+std::string rheologyFitSummary(const RheologyFit& fit);
+
 //- The muI model's coefficients as OpenFOAM dictionary entries (a muICoeffs body:
 //  mu_s, mu_d, I_0, packedFraction, each with its standard error in a comment).
 std::string muICoefficientEntries(const RheologyFit& fit);

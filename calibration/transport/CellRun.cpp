@@ -431,6 +431,25 @@ double solidsDensity(const CellRunSettings& settings)
     return sum/wsum;
 }
 
+CellRunSettings atInertialNumber
+(
+    CellRunSettings settings,
+    double inertialNumber,
+    double equilibrationStrain,
+    double maxEquilibrationStrain,
+    double samplingStrain
+)
+{
+    CellRunSettings& s = settings;
+    s.simulation.mode = CellMode::leesEdwards;
+    s.simulation.shearRate =
+        inertialNumber*std::sqrt(s.simulation.targetPressure/solidsDensity(s))/meanDiameter(s);
+    s.equilibrationTime = equilibrationStrain/s.simulation.shearRate;
+    s.maxEquilibrationTime = maxEquilibrationStrain/s.simulation.shearRate;
+    s.samplingTime = samplingStrain/s.simulation.shearRate;
+    return s;
+}
+
 Packing initialCell(const CellRunSettings& settings, double T0)
 {
     PackingSettings ps;

@@ -89,6 +89,18 @@ double meanDiameter(const CellRunSettings& settings);
 //- Mean density of the species weighted by their solids volume fractions (rho_s of I).
 double solidsDensity(const CellRunSettings& settings);
 
+//- settings sheared at inertial number I at its targetPressure p (a rheology cell): mode
+//  leesEdwards, gammaDot = I sqrt(p/rho_s)/d with d and rho_s as the cell measures I
+//  (meanDiameter, solidsDensity), the run lengths given in strain (time = strain/gammaDot).
+CellRunSettings atInertialNumber
+(
+    CellRunSettings settings,
+    double inertialNumber,
+    double equilibrationStrain,
+    double maxEquilibrationStrain,
+    double samplingStrain
+);
+
 //- The cell's packing at its solids fraction with Maxwellian velocities at T0 (at
 //  equipartition for a stochastically driven cell, InitialState.hpp; plus the
 //  streaming profile if sheared); also written as a LAMMPS data file if

@@ -468,39 +468,33 @@ Foam::label Foam::runConditions
                   ? std::max(0.0, doneSeconds/doneCost*costLeft/busy)
                   : 0;
                 const sdf::dem::CellRunResult& r = f.result;
-                if (c.rheology())
-                {
-                    const sdf::dem::RheologyResult& h = r.rheology;
-                    progress << where.c_str() << " done in "
-                        << fmt(f.seconds).c_str() << " s, ETA "
-                        << fmt(eta).c_str() << " s (I = "
-                        << fmt(h.inertialNumber.value).c_str() << ", mu = "
-                        << fmt(h.stressRatio.value).c_str() << " +- "
-                        << fmt(h.stressRatio.standardError).c_str()
-                        << ", phi = " << fmt(h.solidsFraction.value).c_str()
-                        << " +- "
-                        << fmt(h.solidsFraction.standardError).c_str()
-                        << ", sigma_yy = " << fmt(h.pressure.value).c_str()
-                        << " Pa)" << endl;
-                    lock.lock();
-                    continue;
-                }
+                const sdf::dem::RheologyResult& h = r.rheology;
+                // what the cell measured: a rheology cell's I, mu, phi and
+                // sigma_yy; a transport cell's T and D of the fines
+                const std::string measured =
+                    c.rheology()
+                  ? "I = " + fmt(h.inertialNumber.value) + ", mu = "
+                  + fmt(h.stressRatio.value) + " +- "
+                  + fmt(h.stressRatio.standardError) + ", phi = "
+                  + fmt(h.solidsFraction.value) + " +- "
+                  + fmt(h.solidsFraction.standardError) + ", sigma_yy = "
+                  + fmt(h.pressure.value) + " Pa"
+                  : "T = " + fmt(r.temperature) + ", D_" + settings.fine().name
+                  + " = " + fmt(r.species[0].greenKubo.integral.value) + " +- "
+                  + fmt(r.species[0].greenKubo.integral.standardError) + " m2/s"
+                  + (
+                        c.sheared()
+                      ? " (yy, across the shear), R = " + fmt(r.savageJeffreyR)
+                      : std::string()
+                    );
                 progress << where.c_str() << " done in " << fmt(f.seconds).c_str()
-                    << " s, ETA " << fmt(eta).c_str()
-                    << " s (T = " << fmt(r.temperature).c_str()
-                    << ", D_" << settings.fine().name.c_str() << " = "
-                    << fmt(r.species[0].greenKubo.integral.value).c_str()
-                    << " +- "
-                    << fmt(r.species[0].greenKubo.integral.standardError).c_str()
-                    << " m2/s"
-                    << (
-                           c.sheared()
-                         ? " (yy, across the shear), R = "
-                         + fmt(r.savageJeffreyR)
-                         : std::string()
-                       ).c_str()
-                    << ")" << endl;
-                if (!r.species[0].diffusiveRegime.converged())
+                    << " s, ETA " << fmt(eta).c_str() << " s ("
+                    << measured.c_str() << ")" << endl;
+                if
+                (
+                    !c.rheology()
+                 && !r.species[0].diffusiveRegime.converged()
+                )
                 {
                     progress
                         << "    not in the diffusive regime (stored as not"

@@ -967,14 +967,7 @@ void Foam::fitAndReport
     }
     const fileName coeffFile(runTime.globalPath()/runTime.constant()/"granularCoefficients");
     // the rheology of an earlier calibration stays (it is run apart)
-    std::string kept;
-    if (isFile(coeffFile))
-    {
-        std::ifstream in(coeffFile);
-        std::stringstream existing;
-        existing << in.rdbuf();
-        kept = rheologyBlockOf(existing.str());
-    }
+    const std::string kept(rheologyBlockOf(fileText(coeffFile)));
     try
     {
         sdf::store::writeTextAtomically

@@ -125,11 +125,6 @@ void plotRheology
     }
 }
 
-} // End anonymous namespace
-
-
-namespace
-{
 
 //- The lines of a text, without their line ends ('\n', and a '\r' before it)
 std::vector<std::string> linesOf(const std::string& text)
@@ -191,6 +186,19 @@ std::pair<std::size_t, std::size_t> rheologyLines
 }
 
 } // End anonymous namespace
+
+
+std::string Foam::fileText(const fileName& file)
+{
+    if (!isFile(file))
+    {
+        return std::string();
+    }
+    std::ifstream in(file);
+    std::stringstream text;
+    text << in.rdbuf();
+    return text.str();
+}
 
 
 std::string Foam::rheologyBlockOf(const std::string& text)
@@ -353,32 +361,14 @@ void Foam::fitRheologyAndReport
                 << " written." << nl << exit(FatalError);
         }
     }
-    for (const auto* fits : {&fit.muFits, &fit.phiFits})
     {
-        for (const sdf::fit::FitResult& f : *fits)
+        std::istringstream summary(sdf::fit::rheologyFitSummary(fit));
+        for (std::string line; std::getline(summary, line);)
         {
-            Info<< "  " << f.law.name().c_str() << " = "
-                << f.law.formula().c_str() << ":";
-            for (const auto& q : f.parameters)
-            {
-                Info<< " " << q.name.c_str() << " " << fmt(q.value).c_str()
-                    << " +- " << fmt(q.standardError).c_str();
-            }
-            Info<< " (reduced chi2 " << fmt(f.reducedChiSquare).c_str()
-                << ", AIC " << fmt(f.aic).c_str() << ")" << nl;
+            Info<< "  " << line.c_str() << nl;
         }
     }
-    Info<< "  model choice (AIC): mu(I) " << fit.muSelection.best().law.c_str()
-        << ", phi(I) " << fit.phiSelection.best().law.c_str()
-        << "; the solver's muI takes the muI and phiILinear fits" << nl;
-    if (points.size() < 6)
-    {
-        // relative sigma: the errors come from the scatter about the law
-        Info<< "  warning: " << label(points.size()) << " cells for three"
-            << " parameters: the errors rest on " << label(points.size()) - 3
-            << " degrees of freedom (give 6 or more inertial numbers, up to"
-            << " 0.5-1, so that I passes well beyond I_0)" << nl;
-    }
+    Info<< "  the solver's muI takes the muI and phiILinear fits" << nl;
 
     plotRheology
     (
@@ -391,17 +381,12 @@ void Foam::fitRheologyAndReport
         runTime.globalPath()/runTime.constant()/"granularCoefficients"
     );
     // (a granularCoefficients of the rheology alone: the header, the block)
-    std::string text
-    (
-        sdf::fit::coefficientsFileHeader() + "\n"
-        "// ************************************************************************* //\n"
-    );
-    if (isFile(coeffFile))
+    std::string text(fileText(coeffFile));
+    if (text.empty())
     {
-        std::ifstream in(coeffFile);
-        std::stringstream existing;
-        existing << in.rdbuf();
-        text = existing.str();
+        text =
+            sdf::fit::coefficientsFileHeader() + "\n"
+            "// ************************************************************************* //\n";
     }
     try
     {

@@ -92,6 +92,35 @@ Foam::wordList readLawList
     return laws;
 }
 
+//- The run lengths in strain of sheared cells, checked: samplingStrain > 0,
+//  equilibrationStrain >= 0, maxEquilibrationStrain >= equilibrationStrain,
+//  all finite (the transport cells' and the rheology cells')
+void checkStrains
+(
+    const Foam::dictionary& dict,
+    const Foam::scalar sampling,
+    const Foam::scalar equilibration,
+    const Foam::scalar maxEquilibration
+)
+{
+    using namespace Foam;
+    if
+    (
+        !(sampling > 0) || !(equilibration >= 0)
+     || !(maxEquilibration >= equilibration)
+     || !std::isfinite(sampling)
+     || !std::isfinite(maxEquilibration)
+    )
+    {
+        FatalIOErrorInFunction(dict)
+            << "Strains: samplingStrain " << sampling << " must be"
+            << " > 0, equilibrationStrain " << equilibration
+            << " >= 0 and maxEquilibrationStrain " << maxEquilibration
+            << " >= equilibrationStrain (all finite)" << nl
+            << exit(FatalIOError);
+    }
+}
+
 } // End anonymous namespace
 
 
@@ -511,21 +540,10 @@ void Foam::calibrationSettings::readRheology(const dictionary& dict)
             "maxEquilibrationStrain", 3*r.equilibrationStrain
         );
     r.samplingStrain = rd.getOrDefault<scalar>("samplingStrain", 20);
-    if
+    checkStrains
     (
-        !(r.samplingStrain > 0) || !(r.equilibrationStrain >= 0)
-     || !(r.maxEquilibrationStrain >= r.equilibrationStrain)
-     || !std::isfinite(r.samplingStrain)
-     || !std::isfinite(r.maxEquilibrationStrain)
-    )
-    {
-        FatalIOErrorInFunction(rd)
-            << "Strains: samplingStrain " << r.samplingStrain << " must be"
-            << " > 0, equilibrationStrain " << r.equilibrationStrain
-            << " >= 0 and maxEquilibrationStrain " << r.maxEquilibrationStrain
-            << " >= equilibrationStrain (all finite)" << nl
-            << exit(FatalIOError);
-    }
+        rd, r.samplingStrain, r.equilibrationStrain, r.maxEquilibrationStrain
+    );
 }
 
 
@@ -572,21 +590,10 @@ void Foam::calibrationSettings::readStrains(const dictionary& dict)
         (
             "maxEquilibrationStrain", 2*equilibrationStrain_
         );
-    if
+    checkStrains
     (
-        !(samplingStrain_ > 0) || !(equilibrationStrain_ >= 0)
-     || !(maxEquilibrationStrain_ >= equilibrationStrain_)
-     || !std::isfinite(samplingStrain_)
-     || !std::isfinite(maxEquilibrationStrain_)
-    )
-    {
-        FatalIOErrorInFunction(dict)
-            << "Strains: samplingStrain " << samplingStrain_ << " must be"
-            << " > 0, equilibrationStrain " << equilibrationStrain_
-            << " >= 0 and maxEquilibrationStrain " << maxEquilibrationStrain_
-            << " >= equilibrationStrain (all finite)" << nl
-            << exit(FatalIOError);
-    }
+        dict, samplingStrain_, equilibrationStrain_, maxEquilibrationStrain_
+    );
 }
 
 
@@ -721,18 +728,15 @@ sdf::dem::CellRunSettings Foam::calibrationSettings::rheologyCellSettings
 ) const
 {
     const rheologyEnvelope& r = rheology_;
-    sdf::dem::CellRunSettings s = base_;
-    s.simulation.mode = sdf::dem::CellMode::leesEdwards;
-    s.volumeFractions = {1 - r.x, r.x};
-    s.solidsFraction = r.phi;
-    s.simulation.targetPressure = r.pressure;
-    // I = gammaDot d/sqrt(p/rho_s), d and rho_s as the cell measures I
-    s.simulation.shearRate =
-        inertialNumber*std::sqrt(r.pressure/sdf::dem::solidsDensity(s))
-       /sdf::dem::meanDiameter(s);
-    s.equilibrationTime = r.equilibrationStrain/s.simulation.shearRate;
-    s.maxEquilibrationTime = r.maxEquilibrationStrain/s.simulation.shearRate;
-    s.samplingTime = r.samplingStrain/s.simulation.shearRate;
+    sdf::dem::CellRunSettings mixture = base_;
+    mixture.volumeFractions = {1 - r.x, r.x};
+    mixture.solidsFraction = r.phi;
+    mixture.simulation.targetPressure = r.pressure;
+    sdf::dem::CellRunSettings s = sdf::dem::atInertialNumber
+    (
+        mixture, inertialNumber, r.equilibrationStrain,
+        r.maxEquilibrationStrain, r.samplingStrain
+    );
     s.seed = seed;
     s.label = name;
     return s;
