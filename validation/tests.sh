@@ -501,8 +501,8 @@ mui_expect_refusal()
 
 # muI's bad input: mu_s >= mu_d, a negative I_0, a negative d, an unknown
 # forces, etaMax, pMin, rhoAir, muAir not > 0, packedFraction above 1, a
-# negative settlingVelocity, an
-# unknown or out-of-range wall condition, the open top's alphaMin outside
+# negative settlingVelocity, Beverloo's k not > 0, emptyAnnulus without
+# outletPatches, an unknown or out-of-range wall condition, the open top's alphaMin outside
 # (0, 1), species whose sum is not
 # packedFraction alpha.granular, a species ddt scheme other than Euler, a
 # div(phi,n) with explicit correction: each a fatal error naming the entry
@@ -510,7 +510,7 @@ mui_expect_refusal()
 test_mui_bad_input()
 {
     local dir="$workRoot/muIBadInput" case="$workRoot/muIBadInput/inclinedPlaneMuI" entry value expect
-    for entry in "mu_s 0.7:'mu_d 0.643' must be > mu_s" "I_0 -0.1:'I_0 -0.1' must be > 0" "d -1e-3:'d -0.001' must be > 0" "forces cellCentred:Unknown 'forces cellCentred'; valid: (faceFlux cellGradient)" "etaMax -1:'etaMax -1' must be > 0" "pMin 0:'pMin 0' must be > 0" "rhoAir -1.2:'rhoAir -1.2' must be > 0" "muAir 0:'muAir 0' must be > 0" "packedFraction 1.2:'packedFraction 1.2' must lie in (0, 1]" "settlingVelocity -1:'settlingVelocity -1' must be >= 0"
+    for entry in "mu_s 0.7:'mu_d 0.643' must be > mu_s" "I_0 -0.1:'I_0 -0.1' must be > 0" "d -1e-3:'d -0.001' must be > 0" "forces cellCentred:Unknown 'forces cellCentred'; valid: (faceFlux cellGradient)" "etaMax -1:'etaMax -1' must be > 0" "pMin 0:'pMin 0' must be > 0" "rhoAir -1.2:'rhoAir -1.2' must be > 0" "muAir 0:'muAir 0' must be > 0" "packedFraction 1.2:'packedFraction 1.2' must lie in (0, 1]" "settlingVelocity -1:'settlingVelocity -1' must be >= 0" "k 0:'k 0' must be > 0" "emptyAnnulus yes:'emptyAnnulus yes' needs 'outletPatches'"
     do
         value="${entry%%:*}"; expect="${entry#*:}"
         mui_bad_case "$dir" || return 1
@@ -711,6 +711,99 @@ print("40 mm slot: W %.4f kg/s/m (within %.2e); W40/W20 %.4f against ((b - 1.5 d
 ok = max(d34, d42, d40) < 0.02 and abs(W42 / W34 - 1) < 0.02 and abs(W40 / W34 / law - 1) < 0.05
 sys.exit(0 if ok else 1)
 PY
+}
+
+# The orifice's empty annulus (muICoeffs emptyAnnulus yes, the outlet's
+# p_rgh prghOrificeTotalPressure; validation/planarSiloMuI -emptyAnnulus on
+# 5 mm cells, 0.8 s). With d = 6.667 mm the band k d/2 is 5 mm, one whole
+# face at each rim: a 30 mm slot with the annulus is a 20 mm slot with
+# walls beside it, so
+#   - the log's open fraction of the outlet is 20/30 (to 1e-9),
+#   - the two closed faces carry no flux at any written time (exactly 0),
+#   - its rate (0.3-0.8 s) is the plain 20 mm slot's within 3 % (the
+#     closed faces' velocity is the cells' where the floor's is zero),
+#   - the solids the bin lost left through the slot (to 1e-6) and the
+#     fields stay within their bounds,
+#   - on 2 ranks cut at a rim (the rim edge on the processor boundary) the
+#     open fraction is the same;
+# and a 20 mm slot (d 1.2 mm: the band 0.9 mm inside its two rim faces)
+# flows slower than without the annulus. An open outlet condition that
+# cannot close the rim (prghTotalPressure) is refused, naming the patch
+test_mui_empty_annulus()
+{
+    local dir="$workRoot/muIEmptyAnnulus" run
+    rm -rf "$dir"; mkdir -p "$dir"
+    for run in "annulus30 -b 0.03 -d 6.6667e-3 -emptyAnnulus" "open20 -b 0.02 -d 6.6667e-3" "annulus20 -b 0.02 -emptyAnnulus" "plain20 -b 0.02"
+    do
+        # shellcheck disable=SC2086
+        set -- $run
+        local name="$1"; shift
+        run_case_copy planarSiloMuI "$dir" "$name" -dx 5e-3 -endTime 0.8 "$@" || return 1
+    done
+    python3 -m sdfoam.fieldStats "$dir/annulus30" bounds --tol 1e-8 || return 1
+    python3 - "$dir" <<'PY' || return 1
+import re, sys
+from sdfoam import foamcase
+from sdfoam.beverloo import timeMean
+work = sys.argv[1]
+def rate(name):
+    rows = [[float(v) for v in l.split()] for l in open(work + "/" + name + "/postProcessing/outletComposition/0/outlet.dat") if not l.startswith("#")]
+    return timeMean([(r[0], r[2]) for r in rows], 0.3, 0.8), rows
+case = work + "/annulus30"
+log = open(case + "/log.segregationDegradationFoam").read()
+opened = float(re.search(r"empty annulus: .* open (\S+) of the outlet", log).group(1))
+# The outlet's faces on the written times: the first and last are the rims'
+closedFlux = 0.0
+for t in foamcase.timeDirs(case):
+    text = open(case + "/" + t + "/phi").read()
+    block = text[text.index("outlet"):]
+    values = [float(v) for v in re.search(r"List<scalar>\s*\d+\s*\(([^)]*)\)", block).group(1).split()]
+    closedFlux = max(closedFlux, abs(values[0]), abs(values[-1]))
+    openFlux = min(values[1:-1])
+W30, rows = rate("annulus30")
+W20, _ = rate("open20")
+Wa, _ = rate("annulus20")
+Wp, _ = rate("plain20")
+total = [float(x) for x in re.findall(r"Solids: total volume (\S+)", log)]
+out = (rows[-1][-1] + rows[-1][-2]) / 2500.0
+initial = total[0] + (rows[0][-1] + rows[0][-2]) / 2500.0
+balance = abs((initial - total[-1]) - out) / out
+print("30 mm slot with the annulus (d 6.667 mm): open %.10f of the outlet (20/30 = %.10f); closed faces' largest |phi| %.3g (the open faces' smallest %.3g)"
+      % (opened, 2 / 3.0, closedFlux, openFlux))
+print("rate %.6f kg/s against the 20 mm slot's %.6f: %+.2e; solids lost against out %.1e" % (W30, W20, W30 / W20 - 1, balance))
+print("20 mm slot, d 1.2 mm: %.6f kg/s with the annulus, %.6f without (ratio %.4f)" % (Wa, Wp, Wa / Wp))
+ok = abs(opened - 2 / 3.0) < 1e-9 and closedFlux == 0 and openFlux > 0 \
+    and abs(W30 / W20 - 1) < 0.03 and balance < 1e-6 and Wa < Wp
+sys.exit(0 if ok else 1)
+PY
+    # On 2 ranks cut at a rim (manual decomposition: the cells left of the
+    # slot's left rim on rank 0), the rim edge lies on the processor
+    # boundary and no wall face of rank 1 holds it: found across the ranks,
+    # the open fraction is the serial run's 20/30
+    run_case_copy planarSiloMuI "$dir" parallel30 -dx 5e-3 -b 0.03 -d 6.6667e-3 -emptyAnnulus -endTime 0.002 || return 1
+    local par="$dir/parallel30"
+    python3 - "$par" <<'PY' || return 1
+import sys
+from sdfoam import foamcase
+case = sys.argv[1]
+C = foamcase.cellCentres(case)
+with open(case + "/constant/cellDecomposition", "w") as f:
+    f.write('FoamFile { version 2.0; format ascii; class labelList; location "constant"; object cellDecomposition; }\n%d\n(\n' % len(C))
+    f.write("".join("%d\n" % (0 if c[0] < 0.085 else 1) for c in C))
+    f.write(")\n")
+PY
+    printf 'FoamFile { version 2.0; format ascii; class dictionary; object decomposeParDict; }\nnumberOfSubdomains 2;\nmethod manual;\ncoeffs { dataFile "cellDecomposition"; }\n' > "$par/system/decomposeParDict"
+    decomposePar -case "$par" -force > "$par/log.decomposePar" 2>&1 || { tail -5 "$par/log.decomposePar"; return 1; }
+    mpirun --allow-run-as-root --oversubscribe -np 2 segregationDegradationFoam -parallel -case "$par" > "$par/log.parallel" 2>&1 \
+        || { tail -20 "$par/log.parallel"; return 1; }
+    grep "empty annulus" "$par/log.parallel"
+    grep -q "open 0.6666666667 of the outlet" "$par/log.parallel" || { echo "the open fraction on 2 ranks is not 20/30"; return 1; }
+
+    # prghTotalPressure cannot close the rim: refused, naming the patch
+    local case="$dir/annulus30"
+    rm -rf "$case"/0.[0-9]* "$case"/[1-9]*
+    foamDictionary -entry boundaryField.outlet.type -set prghTotalPressure "$case/0/p_rgh" > /dev/null || return 1
+    mui_expect_refusal "$case" "emptyAnnulus with prghTotalPressure" "'emptyAnnulus yes': p_rgh on outlet patch outlet is prghTotalPressure, which cannot close the orifice's rim" io
 }
 
 # Beverloo from the rheology in the axisymmetric bin (validation/

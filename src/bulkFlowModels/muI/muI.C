@@ -14,6 +14,8 @@
 #include "constrainHbyA.H"
 #include "constrainPressure.H"
 #include "prghBulkRetainingTotalPressureFvPatchScalarField.H"
+#include "prghOrificeTotalPressureFvPatchScalarField.H"
+#include "fixedFluxPressureFvPatchScalarField.H"
 #include "adjustPhi.H"
 #include "findRefCell.H"
 #include "cyclicPolyPatch.H"
@@ -457,20 +459,16 @@ Foam::bulkFlowModels::muI::cellForce() const
 }
 
 
-template<class Action>
-void Foam::bulkFlowModels::muI::forEachRetainingPatch(const Action& action)
+template<class PatchField, class Action>
+void Foam::bulkFlowModels::muI::forEachPatchOf(const Action& action)
 {
     volScalarField::Boundary& p_rghBf = p_rgh_.boundaryFieldRef();
     forAll(p_rghBf, patchi)
     {
-        auto* retaining =
-            dynamic_cast<prghBulkRetainingTotalPressureFvPatchScalarField*>
-            (
-                &p_rghBf[patchi]
-            );
-        if (retaining)
+        auto* condition = dynamic_cast<PatchField*>(&p_rghBf[patchi]);
+        if (condition)
         {
-            action(*retaining, patchi);
+            action(*condition, patchi);
         }
     }
 }
@@ -483,7 +481,7 @@ Foam::label Foam::bulkFlowModels::muI::retainBulk
 )
 {
     label nClosed = 0;
-    forEachRetainingPatch
+    forEachPatchOf<prghBulkRetainingTotalPressureFvPatchScalarField>
     (
         [&](prghBulkRetainingTotalPressureFvPatchScalarField& top, label i)
         {
@@ -502,7 +500,7 @@ Foam::label Foam::bulkFlowModels::muI::retainBulk
 Foam::label Foam::bulkFlowModels::muI::switchRetainingFaces(const bool apply)
 {
     label nSwitched = 0;
-    forEachRetainingPatch
+    forEachPatchOf<prghBulkRetainingTotalPressureFvPatchScalarField>
     (
         [&](prghBulkRetainingTotalPressureFvPatchScalarField& top, label i)
         {
@@ -515,13 +513,73 @@ Foam::label Foam::bulkFlowModels::muI::switchRetainingFaces(const bool apply)
 
 void Foam::bulkFlowModels::muI::releaseRetainingFaces()
 {
-    forEachRetainingPatch
+    forEachPatchOf<prghBulkRetainingTotalPressureFvPatchScalarField>
     (
         [&](prghBulkRetainingTotalPressureFvPatchScalarField& top, label i)
         {
             top.releaseTotalPressure(phi_.boundaryFieldRef()[i]);
         }
     );
+}
+
+
+void Foam::bulkFlowModels::muI::closeEmptyAnnulus
+(
+    const siloGeometry& geometry
+)
+{
+    if (geometry.throat())
+    {
+        FatalIOErrorInFunction(coeffs_)
+            << "'emptyAnnulus yes': the orifice is a throat "
+            << geometry.orificeSize() << " m wide above the outlet patches"
+            << " (at height " << geometry.orificeHeight() << " m), not on"
+            << " them: the rim it would close is not on the outlet patches"
+            << nl << exit(FatalIOError);
+    }
+    const scalar rimWidth = 0.5*k_*d_;
+    const wordRes outletNames(coeffs_.get<wordRes>("outletPatches"));
+    const fvMesh& mesh = mixture_.mesh();
+    scalar area = 0;
+    scalar openArea = 0;
+    for
+    (
+        const label patchi
+      : mesh.boundaryMesh().patchSet(outletNames).sortedToc()
+    )
+    {
+        fvPatchScalarField& pp = p_rgh_.boundaryFieldRef()[patchi];
+        const scalarField& magSf = mesh.magSf().boundaryField()[patchi];
+        if (isA<prghOrificeTotalPressureFvPatchScalarField>(pp))
+        {
+            const scalarField f(geometry.openFraction(patchi, rimWidth));
+            refCast<prghOrificeTotalPressureFvPatchScalarField>(pp)
+               .setOpenFraction(f);
+            area += gSum(magSf);
+            openArea += gSum(f*magSf);
+        }
+        else if (!isA<fixedFluxPressureFvPatchScalarField>(pp))
+        {
+            FatalIOErrorInFunction(coeffs_)
+                << "'emptyAnnulus yes': p_rgh on outlet patch "
+                << mesh.boundary()[patchi].name() << " is " << pp.type()
+                << ", which cannot close the orifice's rim; valid:"
+                << " prghOrificeTotalPressure (an open orifice) or"
+                << " fixedFluxPressure (a closed one)" << nl
+                << exit(FatalIOError);
+        }
+    }
+    if (area > 0)
+    {
+        Info<< "    muI: empty annulus: a band k d/2 = " << rimWidth
+            << " m wide along the orifice's rim closed; open "
+            << openArea/area << " of the outlet patches' area" << endl;
+    }
+    else
+    {
+        Info<< "    muI: empty annulus: the outlet patches are closed"
+            << " (fixedFluxPressure)" << endl;
+    }
 }
 
 
@@ -638,6 +696,18 @@ void Foam::bulkFlowModels::muI::solveFlow()
         phiHbyA += phig;
 
         constrainPressure(p_rgh_, U_, phiHbyA, rAtUf);
+        forEachPatchOf<prghOrificeTotalPressureFvPatchScalarField>
+        (
+            [&](prghOrificeTotalPressureFvPatchScalarField& orifice, label i)
+            {
+                orifice.closeRim
+                (
+                    phiHbyA.boundaryFieldRef()[i],
+                    HbyA.boundaryField()[i],
+                    rAtUf.boundaryField()[i]
+                );
+            }
+        );
         const label nClosed = retainBulk(phiHbyA, rAtUf);
 
         // The faces of prghBulkRetainingTotalPressure patches are a one-way
@@ -707,6 +777,13 @@ void Foam::bulkFlowModels::muI::solveFlow()
             nSwitched += n;
         }
         releaseRetainingFaces();
+        forEachPatchOf<prghOrificeTotalPressureFvPatchScalarField>
+        (
+            [&](prghOrificeTotalPressureFvPatchScalarField& orifice, label i)
+            {
+                orifice.zeroClosedFlux(phi_.boundaryFieldRef()[i]);
+            }
+        );
         // U's open-patch conditions read the flux's sign: the closed faces'
         // is now exactly zero
         U_.correctBoundaryConditions();
@@ -757,7 +834,8 @@ Foam::bulkFlowModels::muI::muI
                 {
                     "rheology", "mu_s", "mu_d", "I_0", "regularised", "d",
                     "rhoS", "packedFraction", "etaMax", "pMin", "rhoAir",
-                    "muAir", "outletPatches", "forces", "settlingVelocity"
+                    "muAir", "outletPatches", "forces", "settlingVelocity",
+                    "emptyAnnulus", "k"
                 }
             ),
             mixture
@@ -768,6 +846,8 @@ Foam::bulkFlowModels::muI::muI
     law_(coeffs_),
     d_(0),
     rhoS_(0),
+    k_(positiveEntry(coeffs_, "k", dimless, 1.5)),
+    emptyAnnulus_(coeffs_.getOrDefault<bool>("emptyAnnulus", false)),
     packedFraction_(coeffs_.getOrDefault<scalar>("packedFraction", 0.6)),
     etaMax_(positiveEntry(coeffs_, "etaMax", dimDynamicViscosity, 1e3)),
     pMin_(positiveEntry(coeffs_, "pMin", dimPressure, 1)),
@@ -1048,7 +1128,7 @@ Foam::bulkFlowModels::muI::muI
         const siloGeometry geometry(mesh, outlets, normalised(g));
         const bool planar = geometry.geometry() == siloGeometry::kind::planar;
         const scalar D0 = geometry.orificeSize();
-        const scalar k = 1.5;
+        const scalar k = k_;
         if (!(D0 - k*d_ > 0))
         {
             FatalIOErrorInFunction(coeffs_)
@@ -1075,6 +1155,16 @@ Foam::bulkFlowModels::muI::muI
                   *geometry.orificeArea()/geometry.fullOrificeArea()
                )
             << " m3/s of bulk" << endl;
+        if (emptyAnnulus_)
+        {
+            closeEmptyAnnulus(geometry);
+        }
+    }
+    else if (emptyAnnulus_)
+    {
+        FatalIOErrorInFunction(coeffs_)
+            << "'emptyAnnulus yes' needs 'outletPatches': the patches of the"
+            << " orifice whose rim it closes" << nl << exit(FatalIOError);
     }
 
     if (!pimple_.consistent())
@@ -1148,7 +1238,7 @@ void Foam::bulkFlowModels::muI::checkFillOverflow()
     // The fullest cell at the open top
     scalar alphaTop = 0;
     string tops;
-    forEachRetainingPatch
+    forEachPatchOf<prghBulkRetainingTotalPressureFvPatchScalarField>
     (
         [&](prghBulkRetainingTotalPressureFvPatchScalarField&, label i)
         {

@@ -10,7 +10,10 @@
 #include "cuttingPlane.H"
 #include "wedgePolyPatch.H"
 #include "emptyPolyPatch.H"
+#include "processorPolyPatch.H"
 #include "mathematicalConstants.H"
+#include "linePointRef.H"
+#include "triPointRef.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -237,6 +240,116 @@ void Foam::siloGeometry::findOrifice()
 }
 
 
+Foam::List<Foam::Pair<Foam::point>> Foam::siloGeometry::rimEdges() const
+{
+    const polyBoundaryMesh& patches = mesh_.boundaryMesh();
+    const labelHashSet outlets(outletPatches_);
+    DynamicList<Pair<point>> local;
+    // Edges across a processor boundary with no wall or outlet face here:
+    // a rim when no outlet face on another rank has them
+    DynamicList<Pair<point>> acrossProcessors;
+    // Every edge of the outlet patches' faces, for that question
+    DynamicList<Pair<point>> outletEdges;
+    for (const label patchi : outletPatches_)
+    {
+        const polyPatch& pp = patches[patchi];
+        const edgeList& edges = pp.edges();
+        const labelList& meshPoints = pp.meshPoints();
+        for (label edgei = 0; edgei < pp.nEdges(); ++edgei)
+        {
+            const label a = meshPoints[edges[edgei].start()];
+            const label b = meshPoints[edges[edgei].end()];
+            const Pair<point> ends(mesh_.points()[a], mesh_.points()[b]);
+            outletEdges.append(ends);
+            if (edgei < pp.nInternalEdges())
+            {
+                continue;
+            }
+            // The boundary faces beside the patch's own across this edge:
+            // another outlet's (the orifice goes on), a processor's, another
+            // constraint's (empty, wedge, symmetry: the mesh's cut, not a
+            // rim) or a wall's
+            bool wall = false;
+            bool outlet = false;
+            bool processor = false;
+            for (const label facei : mesh_.pointFaces()[a])
+            {
+                if
+                (
+                    mesh_.isInternalFace(facei)
+                 || !mesh_.faces()[facei].found(b)
+                )
+                {
+                    continue;
+                }
+                const label otherPatch = patches.whichPatch(facei);
+                if (outlets.found(otherPatch))
+                {
+                    outlet = outlet || otherPatch != patchi;
+                }
+                else if (isA<processorPolyPatch>(patches[otherPatch]))
+                {
+                    processor = true;
+                }
+                else if (!polyPatch::constraintType(patches[otherPatch].type()))
+                {
+                    wall = true;
+                }
+            }
+            if (wall && !outlet)
+            {
+                local.append(ends);
+            }
+            else if (processor && !outlet)
+            {
+                acrossProcessors.append(ends);
+            }
+        }
+    }
+
+    // Gathered from every rank
+    const auto gathered = [](DynamicList<Pair<point>>& mine)
+    {
+        List<List<Pair<point>>> rankEdges(Pstream::nProcs());
+        rankEdges[Pstream::myProcNo()] = std::move(mine);
+        Pstream::gatherList(rankEdges);
+        Pstream::scatterList(rankEdges);
+        DynamicList<Pair<point>> all;
+        for (const List<Pair<point>>& edges : rankEdges)
+        {
+            all.append(edges);
+        }
+        return all;
+    };
+    DynamicList<Pair<point>> rim(gathered(local));
+    if (Pstream::parRun())
+    {
+        const DynamicList<Pair<point>> candidates(gathered(acrossProcessors));
+        const DynamicList<Pair<point>> allOutletEdges(gathered(outletEdges));
+        const scalar tol = 1e-9*mag(mesh_.bounds().span());
+        const auto same = [tol](const Pair<point>& e, const Pair<point>& f)
+        {
+            return
+                (mag(e.first() - f.first()) < tol && mag(e.second() - f.second()) < tol)
+             || (mag(e.first() - f.second()) < tol && mag(e.second() - f.first()) < tol);
+        };
+        for (const Pair<point>& e : candidates)
+        {
+            label nFaces = 0;
+            for (const Pair<point>& f : allOutletEdges)
+            {
+                nFaces += same(e, f);
+            }
+            if (nFaces == 1)
+            {
+                rim.append(e);
+            }
+        }
+    }
+    return List<Pair<point>>(std::move(rim));
+}
+
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::siloGeometry::siloGeometry
@@ -376,6 +489,87 @@ Foam::scalar Foam::siloGeometry::cellHeightAt(const scalar z) const
     reduce(sumH, sumOp<scalar>());
     reduce(n, sumOp<label>());
     return n ? sumH/n : (zMax_ - zMin_);
+}
+
+
+Foam::tmp<Foam::scalarField> Foam::siloGeometry::openFraction
+(
+    const label patchi,
+    const scalar rimWidth
+) const
+{
+    const polyPatch& pp = mesh_.boundaryMesh()[patchi];
+    auto tfraction = tmp<scalarField>::New(pp.size(), 1);
+    scalarField& fraction = tfraction.ref();
+
+    const List<Pair<point>> rim(rimEdges());
+    if (rim.empty() || !(rimWidth > 0))
+    {
+        return tfraction;
+    }
+    const auto distanceToRim = [&rim](const point& p)
+    {
+        scalar d = GREAT;
+        for (const Pair<point>& e : rim)
+        {
+            d = min(d, linePointRef(e.first(), e.second()).nearestDist(p).distance());
+        }
+        return d;
+    };
+
+    const label n = 24;
+    const pointField& points = pp.points();
+    forAll(pp, facei)
+    {
+        const face& f = pp[facei];
+        const point& c = pp.faceCentres()[facei];
+
+        // Wholly beyond the band or wholly inside it: no sampling
+        scalar radius = 0;
+        forAll(f, pointi)
+        {
+            radius = max(radius, mag(points[f[pointi]] - c));
+        }
+        const scalar dc = distanceToRim(c);
+        if (dc - radius > rimWidth || dc + radius <= rimWidth)
+        {
+            fraction[facei] = dc - radius > rimWidth ? 1 : 0;
+            continue;
+        }
+
+        scalar area = 0;
+        scalar open = 0;
+        forAll(f, pointi)
+        {
+            const point& p1 = points[f[pointi]];
+            const point& p2 = points[f.nextLabel(pointi)];
+            const scalar subArea = triPointRef(c, p1, p2).mag()/(n*n);
+            const vector e1(p1 - c);
+            const vector e2(p2 - c);
+            // The n^2 sub-triangles of the lattice (i, j) with i + j < n:
+            // n(n + 1)/2 upright and n(n - 1)/2 upside down
+            for (label i = 0; i < n; ++i)
+            {
+                for (label j = 0; i + j < n; ++j)
+                {
+                    const point up(c + ((i + 1.0/3)*e1 + (j + 1.0/3)*e2)/n);
+                    area += subArea;
+                    open += distanceToRim(up) > rimWidth ? subArea : 0;
+                    if (i + j < n - 1)
+                    {
+                        const point down
+                        (
+                            c + ((i + 2.0/3)*e1 + (j + 2.0/3)*e2)/n
+                        );
+                        area += subArea;
+                        open += distanceToRim(down) > rimWidth ? subArea : 0;
+                    }
+                }
+            }
+        }
+        fraction[facei] = area > 0 ? open/area : 1;
+    }
+    return tfraction;
 }
 
 

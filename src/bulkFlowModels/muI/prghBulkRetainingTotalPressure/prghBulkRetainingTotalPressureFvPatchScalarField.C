@@ -11,48 +11,14 @@
 #include "fvPatchFieldMapper.H"
 #include "volFields.H"
 #include "surfaceFields.H"
-#include "gravityMeshObject.H"
-#include "uniformDimensionedFields.H"
+#include "prghTotalPressureValue.H"
 
 // * * * * * * * * * * * * * * * Private Functions * * * * * * * * * * * * * //
 
 Foam::tmp<Foam::scalarField>
 Foam::prghBulkRetainingTotalPressureFvPatchScalarField::totalPressure() const
 {
-    const objectRegistry& db = this->db();
-    const uniformDimensionedVectorField& g =
-        meshObjects::gravity::New(db.time());
-    const scalar hRef =
-        db.foundObject<uniformDimensionedScalarField>("hRef")
-      ? db.lookupObject<uniformDimensionedScalarField>("hRef").value()
-      : 0;
-    const scalar magG = mag(g.value());
-    const scalar ghRef =
-        magG > SMALL ? (g.value() & (cmptMag(g.value())/magG))*hRef : 0;
-
-    // Before the bulk flow model has made rho, phi and U (the field's
-    // construction at start-up): p0
-    if
-    (
-        !db.foundObject<volScalarField>(rhoName_)
-     || !db.foundObject<surfaceScalarField>(phiName_)
-     || !db.foundObject<volVectorField>(UName_)
-    )
-    {
-        return tmp<scalarField>::New(p0_);
-    }
-
-    const scalarField& rhop =
-        patch().lookupPatchField<volScalarField, scalar>(rhoName_);
-    const scalarField& phip =
-        patch().lookupPatchField<surfaceScalarField, scalar>(phiName_);
-    const vectorField& Up =
-        patch().lookupPatchField<volVectorField, vector>(UName_);
-
-    return
-        p0_
-      - 0.5*rhop*(1.0 - pos0(phip))*magSqr(Up)
-      - rhop*((g.value() & patch().Cf()) - ghRef);
+    return prghTotalPressureValue(*this, p0_, rhoName_, phiName_, UName_);
 }
 
 
