@@ -665,6 +665,15 @@ void Foam::bulkFlowModels::muI::solveFlow()
         // fixedFluxPressure's gradient, which moves with the face force
         // (rAUf - rAtUf) into phiHbyA, grew by rAUf_b/rAtUf_b - 1 (about 7)
         // per corrector there until the fill blew up
+        // HbyA's own flux, before SIMPLEC's face forces join HbyA: what
+        // a wall (U = 0) takes out of phiHbyA, for the orifice's closed band
+        // (without emptyAnnulus every face is open and it plays no part)
+        tmp<surfaceScalarField> HbyAFlux;
+        if (emptyAnnulus_)
+        {
+            HbyAFlux = fvc::flux(HbyA);
+        }
+
         volScalarField rAtU("rAtU", rAU);
         if (pimple_.consistent())
         {
@@ -703,7 +712,9 @@ void Foam::bulkFlowModels::muI::solveFlow()
                 orifice.closeRim
                 (
                     phiHbyA.boundaryFieldRef()[i],
-                    HbyA.boundaryField()[i],
+                    HbyAFlux.valid()
+                  ? scalarField(HbyAFlux().boundaryField()[i])
+                  : scalarField(phiHbyA.boundaryField()[i].size(), Zero),
                     rAtUf.boundaryField()[i]
                 );
             }

@@ -11,6 +11,8 @@
 #include "wedgePolyPatch.H"
 #include "emptyPolyPatch.H"
 #include "processorPolyPatch.H"
+#include "processorCyclicPolyPatch.H"
+#include "wallPolyPatch.H"
 #include "mathematicalConstants.H"
 #include "linePointRef.H"
 #include "triPointRef.H"
@@ -245,8 +247,9 @@ Foam::List<Foam::Pair<Foam::point>> Foam::siloGeometry::rimEdges() const
     const polyBoundaryMesh& patches = mesh_.boundaryMesh();
     const labelHashSet outlets(outletPatches_);
     DynamicList<Pair<point>> local;
-    // Edges across a processor boundary with no wall or outlet face here:
-    // a rim when no outlet face on another rank has them
+    // Edges across a processor boundary with neither a wall nor another
+    // outlet face here: a rim when a wall face on another rank holds them
+    // and no outlet face does
     DynamicList<Pair<point>> acrossProcessors;
     // Every edge of the outlet patches' faces, for that question
     DynamicList<Pair<point>> outletEdges;
@@ -261,14 +264,21 @@ Foam::List<Foam::Pair<Foam::point>> Foam::siloGeometry::rimEdges() const
             const label b = meshPoints[edges[edgei].end()];
             const Pair<point> ends(mesh_.points()[a], mesh_.points()[b]);
             outletEdges.append(ends);
-            if (edgei < pp.nInternalEdges())
+            // Not a boundary edge of the patch, or a collapsed one (a
+            // wedge's axis)
+            if
+            (
+                edgei < pp.nInternalEdges()
+             || mag(ends.second() - ends.first()) < SMALL
+            )
             {
                 continue;
             }
             // The boundary faces beside the patch's own across this edge:
-            // another outlet's (the orifice goes on), a processor's, another
-            // constraint's (empty, wedge, symmetry: the mesh's cut, not a
-            // rim) or a wall's
+            // another outlet's (the orifice goes on), a wall's (the rim),
+            // a processor's (the rim perhaps, on another rank); any other
+            // (empty, wedge, symmetry, cyclic: the mesh's cut; an inlet) is
+            // not a rim
             bool wall = false;
             bool outlet = false;
             bool processor = false;
@@ -283,17 +293,22 @@ Foam::List<Foam::Pair<Foam::point>> Foam::siloGeometry::rimEdges() const
                     continue;
                 }
                 const label otherPatch = patches.whichPatch(facei);
+                const polyPatch& other = patches[otherPatch];
                 if (outlets.found(otherPatch))
                 {
                     outlet = outlet || otherPatch != patchi;
                 }
-                else if (isA<processorPolyPatch>(patches[otherPatch]))
-                {
-                    processor = true;
-                }
-                else if (!polyPatch::constraintType(patches[otherPatch].type()))
+                else if (isA<wallPolyPatch>(other))
                 {
                     wall = true;
+                }
+                else if
+                (
+                    isA<processorPolyPatch>(other)
+                 && !isA<processorCyclicPolyPatch>(other)
+                )
+                {
+                    processor = true;
                 }
             }
             if (wall && !outlet)
@@ -333,16 +348,44 @@ Foam::List<Foam::Pair<Foam::point>> Foam::siloGeometry::rimEdges() const
                 (mag(e.first() - f.first()) < tol && mag(e.second() - f.second()) < tol)
              || (mag(e.first() - f.second()) < tol && mag(e.second() - f.first()) < tol);
         };
-        for (const Pair<point>& e : candidates)
+        // Which candidates a wall face holds, on any rank
+        boolList onWall(candidates.size(), false);
+        if (!candidates.empty())
+        {
+            for (const polyPatch& pp : patches)
+            {
+                if (!isA<wallPolyPatch>(pp))
+                {
+                    continue;
+                }
+                const edgeList& edges = pp.edges();
+                const labelList& meshPoints = pp.meshPoints();
+                for (label edgei = pp.nInternalEdges(); edgei < pp.nEdges(); ++edgei)
+                {
+                    const Pair<point> ends
+                    (
+                        mesh_.points()[meshPoints[edges[edgei].start()]],
+                        mesh_.points()[meshPoints[edges[edgei].end()]]
+                    );
+                    forAll(candidates, i)
+                    {
+                        onWall[i] = onWall[i] || same(candidates[i], ends);
+                    }
+                }
+            }
+        }
+        Pstream::listCombineGather(onWall, orEqOp<bool>());
+        Pstream::listCombineScatter(onWall);
+        forAll(candidates, i)
         {
             label nFaces = 0;
             for (const Pair<point>& f : allOutletEdges)
             {
-                nFaces += same(e, f);
+                nFaces += same(candidates[i], f);
             }
-            if (nFaces == 1)
+            if (nFaces == 1 && onWall[i])
             {
-                rim.append(e);
+                rim.append(candidates[i]);
             }
         }
     }

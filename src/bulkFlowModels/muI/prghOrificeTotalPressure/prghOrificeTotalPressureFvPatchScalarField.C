@@ -48,13 +48,32 @@ prghOrificeTotalPressureFvPatchScalarField
     UName_(dict.getOrDefault<word>("U", "U")),
     openFraction_(p.size(), 1)
 {
-    // Open, at the written value (a restart: the total pressure, which the
-    // first momentum predictor's snGrad(p_rgh) takes)
-    refValue() =
-        dict.found("value") ? scalarField("value", dict, p.size()) : p0_;
-    refGrad() = Zero;
-    valueFraction() = 1;
-    fvPatchScalarField::operator=(refValue());
+    // A restart takes up the written state (the first momentum
+    // predictor's snGrad(p_rgh) is then the last step's); a new case is
+    // open at the written value or p0
+    if (dict.found("refValue") && dict.found("refGradient"))
+    {
+        refValue() = scalarField("refValue", dict, p.size());
+        refGrad() = scalarField("refGradient", dict, p.size());
+        valueFraction() =
+            dict.found("valueFraction")
+          ? scalarField("valueFraction", dict, p.size())
+          : scalarField(p.size(), 1);
+        fvPatchScalarField::operator=
+        (
+            dict.found("value")
+          ? scalarField("value", dict, p.size())
+          : scalarField(refValue())
+        );
+    }
+    else
+    {
+        refValue() =
+            dict.found("value") ? scalarField("value", dict, p.size()) : p0_;
+        refGrad() = Zero;
+        valueFraction() = 1;
+        fvPatchScalarField::operator=(refValue());
+    }
 }
 
 
@@ -131,14 +150,13 @@ void Foam::prghOrificeTotalPressureFvPatchScalarField::setOpenFraction
 void Foam::prghOrificeTotalPressureFvPatchScalarField::closeRim
 (
     scalarField& phiHbyAp,
-    const vectorField& HbyAp,
+    const scalarField& HbyAFluxp,
     const scalarField& rAUfp
 )
 {
     // A wall's phiHbyA: no HbyA through it (U = 0 there)
-    const scalarField HbyAFlux(HbyAp & patch().Sf());
-    const scalarField phiHbyAWall(phiHbyAp - HbyAFlux);
-    phiHbyAp -= (1 - openFraction_)*HbyAFlux;
+    const scalarField phiHbyAWall(phiHbyAp - HbyAFluxp);
+    phiHbyAp -= (1 - openFraction_)*HbyAFluxp;
 
     valueFraction() = openFraction_;
     refValue() =
@@ -214,6 +232,9 @@ void Foam::prghOrificeTotalPressureFvPatchScalarField::write
     os.writeEntryIfDifferent<word>("rho", "rho", rhoName_);
     os.writeEntryIfDifferent<word>("phi", "phi", phiName_);
     os.writeEntryIfDifferent<word>("U", "U", UName_);
+    refValue().writeEntry("refValue", os);
+    refGrad().writeEntry("refGradient", os);
+    valueFraction().writeEntry("valueFraction", os);
     writeEntry("value", os);
 }
 
