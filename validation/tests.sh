@@ -240,6 +240,43 @@ sys.exit(0 if ok and out > 0 else 1)
 PY
 }
 
+# The fill with a calibrated rheology (Allrun -granularCoefficients FILE,
+# the shipped calibration of tutorials/resources/calibratedRheology: packed
+# fraction 0.612214): muI takes it (rheology calibrated), the feed enters at
+# that packing (the inlet's n.fine + n.coarse), ./check's balance holds with
+# it and every cell's species sum to at most that packing times alpha; a
+# FILE that is
+# missing or has no rheology is refused naming it, before anything runs
+test_planar_silo_fill_calibrated_rheology()
+{
+    local dir="$workRoot/planarSiloFillCalibrated" shipped="$projectDir/tutorials/resources/calibratedRheology/granularCoefficients.shipped"
+    rm -rf "$dir"; mkdir -p "$dir"
+    cp -r "$validationDir/planarSiloFill" "$dir/"
+    local case="$dir/planarSiloFill" out
+    out=$("$case/Allrun" -granularCoefficients "$dir/none" 2>&1) && { echo "a missing file was accepted"; return 1; }
+    echo "$out" | grep -F -- "-granularCoefficients: no file $dir/none" || { echo "$out"; return 1; }
+    printf 'FoamFile { version 2.0; format ascii; class dictionary; object granularCoefficients; }\nD { law powerLaw; }\n' > "$dir/noRheology"
+    out=$("$case/Allrun" -granularCoefficients "$dir/noRheology" 2>&1) && { echo "a file without rheology was accepted"; return 1; }
+    echo "$out" | grep -F -- "no rheology.packedFraction" || { echo "$out"; return 1; }
+    "$case/Allrun" -fill 1 -discharge 0.2 -granularCoefficients "$shipped" > "$dir/log.Allrun" 2>&1 \
+        || { tail -20 "$dir/log.Allrun"; return 1; }
+    grep "muI: rheology calibrated" "$case/log.segregationDegradationFoam.fill" || return 1
+    local packed
+    packed=$(foamDictionary -entry rheology.packedFraction -value "$shipped") || return 1
+    python3 -m sdfoam.fieldStats "$case" inBulk --packed "$packed" --tol 1e-8 || return 1
+    python3 - "$case" "$packed" <<'PY'
+import re, sys
+case, packed = sys.argv[1], float(sys.argv[2])
+def inlet(name):
+    text = open(case + "/0/" + name).read()
+    block = text[text.index("inlet"):]
+    return float(re.search(r"value\s+uniform\s+([0-9.eE+-]+)", block).group(1))
+feed = inlet("n.fine") + inlet("n.coarse")
+print("the feed's solids fraction %.10g (the calibration's packed fraction %.10g)" % (feed, packed))
+sys.exit(0 if abs(feed - packed) < 1e-9 else 1)
+PY
+}
+
 # The fill's extremes: a single-species feed (no coarse appears anywhere); a
 # feed of pure coarse onto a bed of fines (each species' balance to 5e-8:
 # 1.25e-9 measured; the solids' to 1e-10, as every run's check); no feed
