@@ -644,6 +644,15 @@ void Foam::bulkFlowModels::muI::solveFlow()
             adjustPhi(phiHbyA, U_, p_rgh_);
         }
 
+        // HbyA's own flux, before SIMPLEC's face forces join HbyA: what
+        // a wall (U = 0) takes out of phiHbyA, for the orifice's closed band
+        // (without emptyAnnulus every face is open and it plays no part)
+        tmp<surfaceScalarField> HbyAFlux;
+        if (emptyAnnulus_)
+        {
+            HbyAFlux = fvc::flux(HbyA);
+        }
+
         // SIMPLEC (PIMPLE { consistent yes; }, as pimpleFoam's): where the
         // viscous coupling to the neighbours dominates the diagonal (a
         // stagnant bulk, eta up to etaMax: eta deltaT / (rho dx^2) is 30-100
@@ -665,15 +674,6 @@ void Foam::bulkFlowModels::muI::solveFlow()
         // fixedFluxPressure's gradient, which moves with the face force
         // (rAUf - rAtUf) into phiHbyA, grew by rAUf_b/rAtUf_b - 1 (about 7)
         // per corrector there until the fill blew up
-        // HbyA's own flux, before SIMPLEC's face forces join HbyA: what
-        // a wall (U = 0) takes out of phiHbyA, for the orifice's closed band
-        // (without emptyAnnulus every face is open and it plays no part)
-        tmp<surfaceScalarField> HbyAFlux;
-        if (emptyAnnulus_)
-        {
-            HbyAFlux = fvc::flux(HbyA);
-        }
-
         volScalarField rAtU("rAtU", rAU);
         if (pimple_.consistent())
         {
@@ -1165,7 +1165,9 @@ Foam::bulkFlowModels::muI::muI
                  : 0.58*sqrt(mag(g))*pow(D0 - k*d_, 2.5)
                   *geometry.orificeArea()/geometry.fullOrificeArea()
                )
-            << " m3/s of bulk" << endl;
+            << " m3/s of bulk; empty annulus "
+            << (emptyAnnulus_ ? "closed (emptyAnnulus yes)" : "open (emptyAnnulus no)")
+            << endl;
         if (emptyAnnulus_)
         {
             closeEmptyAnnulus(geometry);
