@@ -1,4 +1,5 @@
 #include "NeighbourList.hpp"
+#include "ThreadTeam.hpp"
 
 #include <algorithm>
 #include <array>
@@ -129,12 +130,8 @@ void NeighbourList::build(const Particles& p, const PeriodicBox& box, double ski
         }
     }
 
-    #pragma omp parallel num_threads(nThreads)
+    onThreads(nThreads, [&](int tid, int /*team*/)
     {
-        int tid = 0;
-#ifdef _OPENMP
-        tid = omp_get_thread_num();
-#endif
         std::vector<int>& fl = firstLocal_[tid];
         std::vector<int>& sl = secondLocal_[tid];
         fl.clear();
@@ -165,7 +162,7 @@ void NeighbourList::build(const Particles& p, const PeriodicBox& box, double ski
             std::sort(partners.begin(), partners.end());
             for (const int j : partners) { fl.push_back(i); sl.push_back(j); }
         }
-    }
+    });
 
     first_.clear();
     second_.clear();

@@ -3,6 +3,7 @@
 // checkpoint state and the stability checks.
 
 #include "Simulation.hpp"
+#include "ThreadTeam.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -409,30 +410,29 @@ void Simulation::step()
     // the first half of the step: kick, drift, Lees-Edwards wrap (with the offset at the
     // new time), largest peculiar displacement since the last build and in this step
     box_.advanceShear(dt);
-    double maxDisp2 = 0, maxStep2 = 0;
     if (blockParticle_.size() < 2 || blockParticle_.back() != n) partitionWork();
     const int nBlocks = int(driftBegin_.size()) - 1;
     const int* blockParticle = driftBegin_.data();
     const bool balance = nBlocks > 1;
     const double driftStart = balance ? wallSeconds() : 0;
-    #pragma omp parallel num_threads(nThreads_) reduction(max:maxDisp2, maxStep2)
-    {
-        int tid = 0, team = 1;
-#ifdef _OPENMP
-        tid = omp_get_thread_num();
-        team = omp_get_num_threads();
-#endif
-        for (int b = tid; b < nBlocks; b += team)
+    const std::array<double, 2> maxima = maxOverThreads<2>
+    (
+        nThreads_, 0.0,
+        [&](int thread, int team, std::array<double, 2>& local)
         {
-            const double busyStart = balance ? wallSeconds() : 0;
-            driftRange
-            (
-                p, blockParticle[b], blockParticle[b + 1], dt, box_,
-                uBuildX_, uBuildY_, uBuildZ_, maxDisp2, maxStep2
-            );
-            if (balance) driftBalance_.busy[b] += wallSeconds() - busyStart;
+            for (int b = thread; b < nBlocks; b += team)
+            {
+                const double busyStart = balance ? wallSeconds() : 0;
+                driftRange
+                (
+                    p, blockParticle[b], blockParticle[b + 1], dt, box_,
+                    uBuildX_, uBuildY_, uBuildZ_, local[0], local[1]
+                );
+                if (balance) driftBalance_.busy[b] += wallSeconds() - busyStart;
+            }
         }
-    }
+    );
+    const double maxDisp2 = maxima[0], maxStep2 = maxima[1];
     if (balance) driftBalance_.totalWall += wallSeconds() - driftStart;
     time_ += dt;
     timeSinceBuild_ += dt;

@@ -292,6 +292,11 @@ private:
     double nearDrift_ = 0;
     double nearRadiusGrowth_ = 0;
     std::vector<CacheLinePadded<std::vector<int>>> blockContacts_;   // per block: touching pairs this step, in pair order
+    // per block: the touching pairs' minimum-image separation x_i - x_j and Lees-Edwards
+    // velocity shift, kept from the touching test (the force pass does not redo the
+    // image's branches)
+    struct ContactSeparation { double dx, dy, dz, shiftVx; };
+    std::vector<CacheLinePadded<std::vector<ContactSeparation>>> blockSeparations_;
     // per block: its touching pairs whose second particle j lies in a higher block, in
     // decreasing pair order, with their force on i and j's torque sum (n x F_t, and the
     // rolling part; ContactResult::torqueSumJ) (added by j's owner after

@@ -17,6 +17,7 @@
 // Slots of touching pairs are always written: stress sampling reads them.
 
 #include "Simulation.hpp"
+#include "ThreadTeam.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -113,46 +114,44 @@ double Simulation::pairForcePass(bool rebuildNear, bool kickHere, bool finishSum
     const int nBlocks = int(blockParticle_.size()) - 1;
     // busy times for the block shares (only when there is more than one block)
     const bool balance = nBlocks > 1;
-    double maxOverlap = 0;
     const double forceStart = balance ? wallSeconds() : 0;
-    #pragma omp parallel num_threads(nThreads_) reduction(max:maxOverlap)
-    {
-        int tid = 0, team = 1;
-#ifdef _OPENMP
-        tid = omp_get_thread_num();
-        team = omp_get_num_threads();
-#endif
-        for (int b = tid; b < nBlocks; b += team)
+    const double maxOverlap = maxOverThreads<1>
+    (
+        nThreads_, 0.0,
+        [&](int thread, int team, std::array<double, 1>& localMax)
         {
-            const double busyStart = balance ? wallSeconds() : 0;
-            const int nContacts = findTouchingPairs(b, rebuildNear);
-            const double blockOverlap = evaluateTouchingPairs<Law>(b, nContacts);
-            if (blockOverlap > maxOverlap) maxOverlap = blockOverlap;
-            // one block is complete: finish it now (else after the barrier, in parallel
-            // with the higher blocks adding their cross contacts)
-            if (nBlocks == 1)
+            for (int b = thread; b < nBlocks; b += team)
             {
-                finishParticles(blockParticle_[b], blockParticle_[b + 1], kickHere, finishSums);
+                const double busyStart = balance ? wallSeconds() : 0;
+                const int nContacts = findTouchingPairs(b, rebuildNear);
+                const double blockOverlap = evaluateTouchingPairs<Law>(b, nContacts);
+                if (blockOverlap > localMax[0]) localMax[0] = blockOverlap;
+                // one block is complete: finish it now (else after the barrier, in
+                // parallel with the higher blocks adding their cross contacts)
+                if (nBlocks == 1)
+                {
+                    finishParticles(blockParticle_[b], blockParticle_[b + 1], kickHere, finishSums);
+                }
+                if (balance) forceBalance_.busy[b] += wallSeconds() - busyStart;
             }
-            if (balance) forceBalance_.busy[b] += wallSeconds() - busyStart;
-        }
 
-        if (nBlocks > 1)
-        {
-            #pragma omp barrier
-        }
+            if (nBlocks > 1)
+            {
+                #pragma omp barrier
+            }
 
-        // the particles' sums are complete once the lower blocks' cross contacts are added;
-        // this phase has its own particle ranges
-        for (int b = tid; b < nBlocks && nBlocks > 1; b += team)
-        {
-            const double busyStart = wallSeconds();
-            const int begin = finishBegin_[b], end = finishBegin_[b + 1];
-            addCrossContacts(begin, end);
-            finishParticles(begin, end, kickHere, finishSums);
-            finishBalance_.busy[b] += wallSeconds() - busyStart;
+            // the particles' sums are complete once the lower blocks' cross contacts are
+            // added; this phase has its own particle ranges
+            for (int b = thread; b < nBlocks && nBlocks > 1; b += team)
+            {
+                const double busyStart = wallSeconds();
+                const int begin = finishBegin_[b], end = finishBegin_[b + 1];
+                addCrossContacts(begin, end);
+                finishParticles(begin, end, kickHere, finishSums);
+                finishBalance_.busy[b] += wallSeconds() - busyStart;
+            }
         }
-    }
+    )[0];
     if (balance) forceBalance_.totalWall += wallSeconds() - forceStart;
     return maxOverlap;
 }
@@ -181,10 +180,15 @@ int Simulation::findTouchingPairs(int b, bool rebuildNear)
     // a short loop without the contact law, the touching pairs compacted in pair order
     // without a branch (over the near list; over all listed pairs when it is rebuilt)
     std::vector<int>& contacts = blockContacts_[b];
+    std::vector<ContactSeparation>& separations = blockSeparations_[b];
     std::vector<int>& near = nearPairs_[b];
     const int nListed = blockPair[b + 1] - blockPair[b];
     // sized once per list (no shrinking: growing again would fill it with zeros)
-    if (contacts.size() < std::size_t(nListed)) contacts.resize(std::size_t(nListed));
+    if (contacts.size() < std::size_t(nListed))
+    {
+        contacts.resize(std::size_t(nListed));
+        separations.resize(std::size_t(nListed));
+    }
     int nContacts = 0, nNear = 0;
     if (rebuildNear) near.resize(std::size_t(nListed));
     const int nScan = rebuildNear ? nListed : int(near.size());
@@ -199,6 +203,7 @@ int Simulation::findTouchingPairs(int b, bool rebuildNear)
         const double dist2 = dx*dx + dy*dy + dz*dz;
         const bool touching = dist2 < reach*reach;
         contacts[nContacts] = k;
+        separations[nContacts] = {dx, dy, dz, shiftVx};
         nContacts += touching;
         if (rebuildNear)
         {
@@ -230,7 +235,6 @@ double Simulation::evaluateTouchingPairs(int b, int nContacts)
     const int nSpecies = int(species_.size());
     const double dt = dt_;
     const double h = 0.5*dt_;
-    const PeriodicBox box = box_;
     const double* fPrevX = fPrevX_.data();
     const double* fPrevY = fPrevY_.data();
     const double* fPrevZ = fPrevZ_.data();
@@ -241,6 +245,7 @@ double Simulation::evaluateTouchingPairs(int b, int nContacts)
     std::vector<long>& hist = blockHist_[b];
     std::vector<CollisionRecord>& impacts = blockImpacts_[b];
     const std::vector<int>& contacts = blockContacts_[b];
+    const std::vector<ContactSeparation>& separations = blockSeparations_[b];
     const int ownEnd = blockParticle_[b + 1];
     std::vector<CrossContact>& cross = blockCross_[b];
     cross.clear();
@@ -249,13 +254,12 @@ double Simulation::evaluateTouchingPairs(int b, int nContacts)
     {
         const int k = contacts[c];
         const int i = first[k], j = second[k];
-        double dx = p.x[i] - p.x[j], dy = p.y[i] - p.y[j], dz = p.z[i] - p.z[j];
-        double shiftVx = 0;
-        box.minimumImage(dx, dy, dz, shiftVx);
+        const ContactSeparation& r = separations[c];
+        const double shiftVx = r.shiftVx;
         const double ri = p.radius[i], rj = p.radius[j];
         active_[k] = 1;
         ContactKinematics kin;
-        kin.r[0] = dx; kin.r[1] = dy; kin.r[2] = dz;
+        kin.r[0] = r.dx; kin.r[1] = r.dy; kin.r[2] = r.dz;
         kin.radiusI = ri; kin.radiusJ = rj;
         kin.dvHalf[0] = p.vx[i] - p.vx[j] + shiftVx;
         kin.dvHalf[1] = p.vy[i] - p.vy[j];

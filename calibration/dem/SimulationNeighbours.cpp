@@ -150,6 +150,7 @@ void Simulation::partitionWork()
     blockHist_.resize(nBlocks);
     blockImpacts_.resize(nBlocks);
     blockContacts_.resize(nBlocks);
+    blockSeparations_.resize(nBlocks);
     blockCross_.resize(nBlocks);
     nearPairs_.resize(nBlocks);
 }
