@@ -841,6 +841,25 @@ PY
     rm -rf "$case"/0.[0-9]* "$case"/[1-9]*
     foamDictionary -entry boundaryField.outlet.type -set prghTotalPressure "$case/0/p_rgh" > /dev/null || return 1
     mui_expect_refusal "$case" "emptyAnnulus with prghTotalPressure" "'emptyAnnulus yes': p_rgh on outlet patch outlet is prghTotalPressure, which cannot close the orifice's rim" io
+
+    # An orifice that is a throat above the outlet patches (OpenFOAM's
+    # hopper tutorial mesh: a 30 mm throat above a 300 mm skirt, one cell
+    # thick, its inlet renamed the bin's open top, its front and back
+    # empty): the rim the band would close is not on
+    # the outlet patches, so the run is refused, naming the throat
+    local tutorial="$projectDir/.cache/openfoam/tutorials/lagrangian/icoUncoupledKinematicParcelFoam/hopper/hopperEmptying"
+    [ -f "$tutorial/system/blockMeshDict" ] || { echo "no OpenFOAM tutorial at $tutorial (run etc/bootstrap)"; return 1; }
+    local throat="$dir/throat"
+    rm -rf "$throat"; mkdir -p "$throat"
+    cp -r "$case/system" "$case/constant" "$case/0.orig" "$throat/"
+    rm -rf "$throat/constant/polyMesh"
+    cp "$tutorial/constant/g" "$throat/constant/g"
+    sed 's/\binlet\b/atmosphere/; /frontAndBack/,/faces/ s/type wall;/type empty;/' "$tutorial/system/blockMeshDict" > "$throat/system/blockMeshDict"
+    blockMesh -case "$throat" > "$throat/log.blockMesh" 2>&1 || { tail -5 "$throat/log.blockMesh"; return 1; }
+    cp -r "$throat/0.orig" "$throat/0"
+    sed -i 's/^\( *outlet *{ *type *\)prghTotalPressure;/\1prghOrificeTotalPressure;/' "$throat/0/p_rgh"
+    grep -q "outlet *{ *type *prghOrificeTotalPressure;" "$throat/0/p_rgh" || { echo "the throat case's outlet is not prghOrificeTotalPressure"; return 1; }
+    mui_expect_refusal "$throat" "emptyAnnulus above a throat" "'emptyAnnulus yes': the orifice is a throat 0.03" io
 }
 
 # Beverloo from the rheology in the axisymmetric bin (validation/

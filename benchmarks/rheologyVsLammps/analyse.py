@@ -11,7 +11,7 @@ production quarter against 0.38-0.39 after it, lasted past LAMMPS' 4 strains), c
 Agreement: |ours - LAMMPS| against 2 combined standard errors, per seed and for the
 seed means (whose error is the larger of the seeds' spread and their block errors).
 """
-import math, os, re, statistics, sys
+import glob, math, os, re, statistics, sys
 
 out, inertial, seeds = sys.argv[1], sys.argv[2].split(), sys.argv[3].split()
 rollings = sys.argv[4].split() if len(sys.argv) > 4 else ["0"]
@@ -107,17 +107,33 @@ for I, muR, mo, ml, mz, po, pl, pz in table:
 print(f"\nlargest difference of the seed means (mu, phi over all I and mu_r): {worst:.2f}"
       " combined s.e.")
 
-tp = os.path.join(out, "throughput")
-if os.path.isdir(tp):
-    text = open(os.path.join(tp, "ours.log")).read()
-    oursRate = float(re.search(r"throughput %s particle-steps/s" % NUM, text).group(1))
-    log = open(os.path.join(tp, "lammps.log")).read()
+def lammpsRate(path):
+    """Particle-steps per second of a LAMMPS log: the sum of its loop times over the
+    barostat's segments (the set-ups of its runs between them left out)."""
+    log = open(path).read()
     loops = [(float(t), int(s), int(a)) for t, s, a in re.findall(
         r"Loop time of %s on \d+ procs for (\d+) steps with (\d+) atoms" % NUM, log)]
-    steps = sum(s for _, s, _ in loops)
-    seconds = sum(t for t, _, _ in loops)
-    atoms = loops[0][2]
-    lammpsRate = steps*atoms/seconds
-    print(f"\nthroughput at I 0.2, one core: ours {oursRate:.4g} particle-steps/s, LAMMPS "
-          f"{lammpsRate:.4g} (sum of its loop times over {len(loops)} segments: its runs' "
-          f"set-ups between the barostat's segments excluded) -> ratio {oursRate/lammpsRate:.2f}")
+    return sum(s for _, s, _ in loops)*loops[0][2]/sum(t for t, _, _ in loops), len(loops)
+
+
+tp = os.path.join(out, "throughput")
+rounds = sorted(glob.glob(os.path.join(tp, "round*")), key=lambda d: int(d.rsplit("round", 1)[1]))
+if rounds:
+    print("\nthroughput at I 0.2, one core each, in rounds (ours, then LAMMPS as in the physics"
+          " runs: newton off, <sigma_yy> every step; then LAMMPS at its fastest: newton on,"
+          " <sigma_yy> every 10 steps as ours) [particle-steps/s]:")
+    print("  round  ours        LAMMPS physics  ratio   LAMMPS fastest  ratio")
+    ratios = {"physics": [], "fastest": []}
+    for d in rounds:
+        text = open(os.path.join(d, "ours.log")).read()
+        ours = float(re.search(r"throughput %s particle-steps/s" % NUM, text).group(1))
+        row = f"  {os.path.basename(d)[5:]:5s}  {ours:.4g}"
+        for name in ("physics", "fastest"):
+            rate, segments = lammpsRate(os.path.join(d, f"lammps-{name}.log"))
+            ratios[name].append(ours/rate)
+            row += f"   {rate:.4g} ({segments} segments)  {ours/rate:.2f}"
+        print(row)
+    for name in ("physics", "fastest"):
+        r = sorted(ratios[name])
+        print(f"  median ratio against LAMMPS {name}: {statistics.median(r):.2f}"
+              f" (range {r[0]:.2f}-{r[-1]:.2f}, {len(r)} rounds)")

@@ -538,6 +538,7 @@ void Foam::bulkFlowModels::muI::closeEmptyAnnulus
             << nl << exit(FatalIOError);
     }
     const scalar rimWidth = 0.5*k_*d_;
+    const List<Pair<point>> rim(geometry.rimEdges());
     const wordRes outletNames(coeffs_.get<wordRes>("outletPatches"));
     const fvMesh& mesh = mixture_.mesh();
     scalar area = 0;
@@ -552,7 +553,7 @@ void Foam::bulkFlowModels::muI::closeEmptyAnnulus
         const scalarField& magSf = mesh.magSf().boundaryField()[patchi];
         if (isA<prghOrificeTotalPressureFvPatchScalarField>(pp))
         {
-            const scalarField f(geometry.openFraction(patchi, rimWidth));
+            const scalarField f(geometry.openFraction(rim, patchi, rimWidth));
             refCast<prghOrificeTotalPressureFvPatchScalarField>(pp)
                .setOpenFraction(f);
             area += gSum(magSf);
@@ -1139,13 +1140,12 @@ Foam::bulkFlowModels::muI::muI
         const siloGeometry geometry(mesh, outlets, normalised(g));
         const bool planar = geometry.geometry() == siloGeometry::kind::planar;
         const scalar D0 = geometry.orificeSize();
-        const scalar k = k_;
-        if (!(D0 - k*d_ > 0))
+        if (!(D0 - k_*d_ > 0))
         {
             FatalIOErrorInFunction(coeffs_)
                 << "outletPatches " << outletNames << ": the orifice is "
                 << D0 << " m " << (planar ? "wide (a slot)" : "across")
-                << ", not more than k d = " << k << " x " << d_ << " m"
+                << ", not more than k d = " << k_ << " x " << d_ << " m"
                 << " (Beverloo's k, d the particle diameter 'd'): the bulk"
                 << " arches over it and does not flow; the mu(I) continuum"
                 << " cannot arch, so the run is refused" << nl
@@ -1156,13 +1156,13 @@ Foam::bulkFlowModels::muI::muI
             << geometry.kindReason() << "); Beverloo's law for comparison: "
             << (
                    planar
-                 ? "1.03 sqrt(g) L (b - 1.5 d)^1.5 = "
-                 : "0.58 sqrt(g) (D0 - 1.5 d)^2.5 (the mesh's share) = "
+                 ? "1.03 sqrt(g) L (b - k d)^1.5 = "
+                 : "0.58 sqrt(g) (D0 - k d)^2.5 (the mesh's share) = "
                )
             << (
                    planar
-                 ? 1.03*sqrt(mag(g))*geometry.slotLength()*pow(D0 - k*d_, 1.5)
-                 : 0.58*sqrt(mag(g))*pow(D0 - k*d_, 2.5)
+                 ? 1.03*sqrt(mag(g))*geometry.slotLength()*pow(D0 - k_*d_, 1.5)
+                 : 0.58*sqrt(mag(g))*pow(D0 - k_*d_, 2.5)
                   *geometry.orificeArea()/geometry.fullOrificeArea()
                )
             << " m3/s of bulk; empty annulus "

@@ -537,6 +537,7 @@ Foam::scalar Foam::siloGeometry::cellHeightAt(const scalar z) const
 
 Foam::tmp<Foam::scalarField> Foam::siloGeometry::openFraction
 (
+    const List<Pair<point>>& rim,
     const label patchi,
     const scalar rimWidth
 ) const
@@ -545,7 +546,6 @@ Foam::tmp<Foam::scalarField> Foam::siloGeometry::openFraction
     auto tfraction = tmp<scalarField>::New(pp.size(), 1);
     scalarField& fraction = tfraction.ref();
 
-    const List<Pair<point>> rim(rimEdges());
     if (rim.empty() || !(rimWidth > 0))
     {
         return tfraction;
