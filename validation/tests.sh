@@ -764,8 +764,10 @@ PY
 #   - on 2 ranks cut at a rim (the rim edge on the processor boundary) the
 #     open fraction is the same;
 # and a 20 mm slot (d 1.2 mm: the band 0.9 mm inside its two rim faces)
-# flows slower than without the annulus. An open outlet condition that
-# cannot close the rim (prghTotalPressure) is refused, naming the patch
+# flows slower than without the annulus. Refused, each naming what it
+# found: an open outlet condition that cannot close the rim
+# (prghTotalPressure), an orifice that is a throat above the outlet
+# patches, a rim on a hopper's sloping wall
 test_mui_empty_annulus()
 {
     local dir="$workRoot/muIEmptyAnnulus" run
@@ -860,6 +862,20 @@ PY
     sed -i 's/^\( *outlet *{ *type *\)prghTotalPressure;/\1prghOrificeTotalPressure;/' "$throat/0/p_rgh"
     grep -q "outlet *{ *type *prghOrificeTotalPressure;" "$throat/0/p_rgh" || { echo "the throat case's outlet is not prghOrificeTotalPressure"; return 1; }
     mui_expect_refusal "$throat" "emptyAnnulus above a throat" "'emptyAnnulus yes': the orifice is a throat 0.03" io
+
+    # A planar hopper's rim (validation/planarSiloFill -hopper 20: walls at
+    # 70 degrees to the slot's plane): the band would be a ledge across the
+    # walls' stream, so the band closure is refused, naming the wall's angle
+    # (the empty annulus of a hopper is its slot meshed k d narrower;
+    # benchmarks/siloFillDEM/compare --emptyAnnulus); a short fill, should
+    # it run
+    local hopper="$dir/hopper"
+    rm -rf "$hopper"; cp -r "$projectDir/validation/planarSiloFill" "$hopper"
+    if "$hopper/Allrun" -hopper 20 -emptyAnnulus -W 0.1 -H 0.22 -b 0.024 -dx 5e-3 -fill 0.01 > "$dir/log.hopper" 2>&1
+    then
+        echo "planarSiloFill -hopper 20 -emptyAnnulus ran"; return 1
+    fi
+    mui_expect_refusal "$hopper" "emptyAnnulus in a hopper" "'emptyAnnulus yes': the orifice's rim is on a wall at 70.1" io
 }
 
 # Beverloo from the rheology in the axisymmetric bin (validation/

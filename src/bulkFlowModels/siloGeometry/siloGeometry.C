@@ -14,6 +14,7 @@
 #include "processorCyclicPolyPatch.H"
 #include "wallPolyPatch.H"
 #include "mathematicalConstants.H"
+#include "unitConversion.H"
 #include "linePointRef.H"
 #include "triPointRef.H"
 
@@ -242,8 +243,14 @@ void Foam::siloGeometry::findOrifice()
 }
 
 
-Foam::List<Foam::Pair<Foam::point>> Foam::siloGeometry::rimEdges() const
+Foam::List<Foam::Pair<Foam::point>> Foam::siloGeometry::rimEdges
+(
+    scalar* wallAngle
+) const
 {
+    // The largest angle between a rim's wall face and the outlet face
+    // beside it [rad] (-1: no rim edge with both on this rank)
+    scalar largestAngle = -1;
     const polyBoundaryMesh& patches = mesh_.boundaryMesh();
     const labelHashSet outlets(outletPatches_);
     DynamicList<Pair<point>> local;
@@ -282,6 +289,7 @@ Foam::List<Foam::Pair<Foam::point>> Foam::siloGeometry::rimEdges() const
             bool wall = false;
             bool outlet = false;
             bool processor = false;
+            scalar angle = -1;
             for (const label facei : mesh_.pointFaces()[a])
             {
                 if
@@ -301,6 +309,16 @@ Foam::List<Foam::Pair<Foam::point>> Foam::siloGeometry::rimEdges() const
                 else if (isA<wallPolyPatch>(other))
                 {
                     wall = true;
+                    const vector nWall(normalised(mesh_.faceAreas()[facei]));
+                    const vector nOutlet
+                    (
+                        pp.faceNormals()[pp.edgeFaces()[edgei][0]]
+                    );
+                    angle = max
+                    (
+                        angle,
+                        acos(max(scalar(-1), min(scalar(1), nWall & nOutlet)))
+                    );
                 }
                 else if
                 (
@@ -314,6 +332,7 @@ Foam::List<Foam::Pair<Foam::point>> Foam::siloGeometry::rimEdges() const
             if (wall && !outlet)
             {
                 local.append(ends);
+                largestAngle = max(largestAngle, angle);
             }
             else if (processor && !outlet)
             {
@@ -387,6 +406,14 @@ Foam::List<Foam::Pair<Foam::point>> Foam::siloGeometry::rimEdges() const
             {
                 rim.append(candidates[i]);
             }
+        }
+    }
+    if (wallAngle)
+    {
+        *wallAngle = returnReduce(largestAngle, maxOp<scalar>());
+        if (*wallAngle >= 0)
+        {
+            *wallAngle = radToDeg(*wallAngle);
         }
     }
     return List<Pair<point>>(std::move(rim));
