@@ -547,7 +547,7 @@ void Foam::bulkFlowModels::muI::closeEmptyAnnulus
     // whole length: there the empty annulus is the wall moved in, and a
     // band closed at the rim is a ledge that stops the wall's stream (a
     // planar hopper at 20 degrees discharged at 0.73-0.77 of its DEM peer
-    // with the band, 1.08 with the slot meshed k d narrower;
+    // with the band, 1.05-1.08 with the slot meshed k d narrower;
     // docs/validation.md)
     const scalar steepestFloor = 45;
     if (wallAngle > steepestFloor)
