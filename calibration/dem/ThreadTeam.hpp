@@ -3,9 +3,8 @@
 
 // Running a step's loops on the engine's threads. On one thread the body is called
 // directly: an OpenMP team of one still ends with libgomp's futex wake-ups (about two
-// system calls per parallel region), which cost a 500-particle cell about 5 % of its
-// step on a virtual machine, where system calls are expensive, and made its timings
-// noisy.
+// system calls per parallel region), which cost a 500-particle cell 7.5 % of its step
+// on a virtual machine, where system calls are expensive.
 
 #include <algorithm>
 #include <array>
