@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """benchmarks/muIBeverloo: rates, constancy and the Beverloo fit.
 
-Usage: analyse.py WORK RESULTS
+Usage: analyse.py WORK RESULTS [PACKED D [COEFFICIENTS]]
 
 Reads WORK/<run>/postProcessing/outletComposition/0/outlet.dat (mass flow
 through the slot of a one-cell-deep planar bin) and the run's Allrun
@@ -15,6 +15,8 @@ Fit: W = rho_b C sqrt(g) (b - k d)^n over the `fit` runs, rho_b = 0.6 x
 2500 kg/m3, d = 1.2 mm (the mixture's solids-weighted mean, muI's d): k
 on a grid of 0.01 d (0-6), n and C by least squares in log W at each k,
 the k of least squares kept; and with k = 1.5 fixed (Beverloo's k).
+With PACKED and D (run -granularCoefficients: the calibrated rheology's
+packed fraction and d) rho_b = PACKED x 2500 kg/m3 and d = D instead.
 """
 import math
 import os
@@ -23,7 +25,10 @@ import sys
 from sdfoam.beverloo import fit as fitBeverloo, fitFixedK, measure, outletSeries, readRuns, writeRateFile
 
 work, results = sys.argv[1], sys.argv[2]
-g, rhoBulk, d = 9.81, 0.6 * 2500.0, 1.2e-3
+packed = float(sys.argv[3]) if len(sys.argv) > 3 else 0.6
+g, rhoBulk = 9.81, packed * 2500.0
+d = float(sys.argv[4]) if len(sys.argv) > 4 else 1.2e-3
+source = sys.argv[5] if len(sys.argv) > 5 and sys.argv[5] else ""
 tStart, window = 0.3, 0.1
 
 runs = readRuns(work)
@@ -31,7 +36,8 @@ runs = readRuns(work)
 rates = {}
 with open(results, "w") as out:
     out.write("# benchmarks/muIBeverloo: planar flat-bottomed bin, bulkFlow muI (validation/planarSiloMuI),\n")
-    out.write("# mass flow per metre of slot W [kg/s/m]; rho_b %.0f kg/m3, d %.1f mm\n" % (rhoBulk, d * 1e3))
+    out.write("# mass flow per metre of slot W [kg/s/m]; rho_b %.0f kg/m3, d %.1f mm; mu(I) %s\n"
+              % (rhoBulk, d * 1e3, "calibrated (%s)" % source if source else "glass beads (Jop et al. 2006)"))
     out.write("# run b[mm] dx[mm] hFill[m] W[kg/s/m] window[s] constancy(max 0.1s dev) discharged_in_window\n")
     for name, o in runs:
         series = outletSeries(os.path.join(work, name), scale=1 / o["dx"])
@@ -54,11 +60,14 @@ with open(results, "w") as out:
               % (", ".join("%.0f" % (b * 1e3) for b, _ in fit), n, C, k, res))
     out.write("# with k = 1.5: n %.3f +- %.3f (standard error), C %.4f\n" % (n15, se15, C15))
     out.write("# with n = 3/2, k = 1.5: C %.4f (slot law C = 1.03, Nedderman after Myers & Sellers)\n" % C32)
-    out.write("# height_b20 / coarse_b20 (fill height 0.42 / 0.34 m): %.4f\n"
-              % (rates["height_b20"][1] / rates["coarse_b20"][1]))
+    # the ratios of the runs that ran (run -only leaves some out)
+    if "height_b20" in rates and "coarse_b20" in rates:
+        out.write("# height_b20 / coarse_b20 (fill height 0.42 / 0.34 m): %.4f\n"
+                  % (rates["height_b20"][1] / rates["coarse_b20"][1]))
     for b in (20, 30):
-        out.write("# coarse_b%d / fit_b%d (5 / 2.5 mm cells): %.4f\n"
-                  % (b, b, rates["coarse_b%d" % b][1] / rates["fit_b%d" % b][1]))
+        if "coarse_b%d" % b in rates and "fit_b%d" % b in rates:
+            out.write("# coarse_b%d / fit_b%d (5 / 2.5 mm cells): %.4f\n"
+                      % (b, b, rates["coarse_b%d" % b][1] / rates["fit_b%d" % b][1]))
     with open(os.path.join(work, "fit.dat"), "w") as f:
         f.write("# b[m] W[kg/s/m] fit(n,C,k) slotLaw(1.03, k 1.5, n 1.5)\n")
         for b, W in sorted(fit):
