@@ -1,4 +1,5 @@
 #include "Driving.hpp"
+#include "ThreadTeam.hpp"
 #include "StochasticDriving.hpp"
 
 #include <algorithm>
@@ -206,13 +207,12 @@ void VelocityRescalingThermostat::afterStep(Particles& p, int nThreads)
     const double ratio = targetTemperature_/T;
     const double lambda =
         std::sqrt(std::max(0.0, 1.0 + timeStep_/relaxationTime_*(ratio - 1.0)));
-    #pragma omp parallel for num_threads(nThreads) schedule(static) if(nThreads > 1)
-    for (int i = 0; i < n; ++i)
+    forEachIndex(nThreads, n, [&](int i)
     {
         p.vx[i] = ux + lambda*(p.vx[i] - ux);
         p.vy[i] = uy + lambda*(p.vy[i] - uy);
         p.vz[i] = uz + lambda*(p.vz[i] - uz);
-    }
+    });
 }
 
 } // namespace sdf::dem

@@ -1,4 +1,5 @@
 #include "KolmogorovForcing.hpp"
+#include "ThreadTeam.hpp"
 
 #include <cmath>
 #include <stdexcept>
@@ -58,11 +59,10 @@ void KolmogorovForcing::afterStep(Particles& p, int nThreads)
         momentum += p.mass[i]*acceleration(p.y[i]);
     }
     const double meanIncrement = momentum/mass*timeStep_;
-    #pragma omp parallel for num_threads(nThreads) schedule(static) if(nThreads > 1)
-    for (int i = 0; i < n; ++i)
+    forEachIndex(nThreads, n, [&](int i)
     {
         p.vx[i] += acceleration(p.y[i])*timeStep_ - meanIncrement;
-    }
+    });
 }
 
 } // namespace sdf::dem

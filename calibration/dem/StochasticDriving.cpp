@@ -1,4 +1,5 @@
 #include "StochasticDriving.hpp"
+#include "ThreadTeam.hpp"
 
 #include <Random123/boxmuller.hpp>
 #include <Random123/philox.h>
@@ -146,8 +147,7 @@ void StochasticDriving::afterStep(Particles& p, int nThreads)
     normalZ_.resize(std::size_t(n));
     const int nChunks = (n + finishChunk - 1)/finishChunk;
     std::vector<std::array<double, 5>> chunkSums(static_cast<std::size_t>(nChunks));
-    #pragma omp parallel for num_threads(nThreads) schedule(static) if(nThreads > 1)
-    for (int c = 0; c < nChunks; ++c)
+    forEachIndex(nThreads, nChunks, [&](int c)
     {
         std::array<double, 5> sum{};
         for (int i = c*finishChunk; i < std::min(n, (c + 1)*finishChunk); ++i)
@@ -162,7 +162,7 @@ void StochasticDriving::afterStep(Particles& p, int nThreads)
             sum[2] += m*xi[0]; sum[3] += m*xi[1]; sum[4] += m*xi[2];
         }
         chunkSums[std::size_t(c)] = sum;
-    }
+    });
     std::array<double, 5> total{};
     for (const auto& sum : chunkSums)
     {
@@ -179,13 +179,12 @@ void StochasticDriving::afterStep(Particles& p, int nThreads)
     const double ux = amplitude*total[2]/total[0];
     const double uy = amplitude*total[3]/total[0];
     const double uz = amplitude*total[4]/total[0];
-    #pragma omp parallel for num_threads(nThreads) schedule(static) if(nThreads > 1)
-    for (int i = 0; i < n; ++i)
+    forEachIndex(nThreads, n, [&](int i)
     {
         p.vx[i] += amplitude*normalX_[i] - ux;
         p.vy[i] += amplitude*normalY_[i] - uy;
         p.vz[i] += amplitude*normalZ_[i] - uz;
-    }
+    });
     const VelocityChunkSums::Totals after = VelocityChunkSums::sum(p);
     heldAfterKick_ = held(temperatureAboutMean(after, n, u), after);
 }

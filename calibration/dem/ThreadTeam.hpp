@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cstdint>
 
 #ifdef _OPENMP
 #include <omp.h>
@@ -53,6 +54,20 @@ void onThreads(int nThreads, Body&& body)
     maxOverThreads<0>(nThreads, 0.0, [&](int thread, int team, std::array<double, 0>&)
     {
         body(thread, team);
+    });
+}
+
+//- Calls body(i) for every i in [0, n), the range split into one contiguous piece per
+//  thread as schedule(static) splits it (directly when nThreads <= 1). For loops whose
+//  iterations are independent: the result does not depend on the split.
+template<class Body>
+void forEachIndex(int nThreads, int n, Body&& body)
+{
+    onThreads(nThreads, [&](int thread, int team)
+    {
+        const int begin = int(std::int64_t(n)*thread/team);
+        const int end = int(std::int64_t(n)*(thread + 1)/team);
+        for (int i = begin; i < end; ++i) body(i);
     });
 }
 
