@@ -17,12 +17,19 @@ on a grid of 0.01 d (0-6), n and C by least squares in log W at each k,
 the k of least squares kept; and with k = 1.5 fixed (Beverloo's k).
 With PACKED and D (run -granularCoefficients: the calibrated rheology's
 packed fraction and d) rho_b = PACKED x 2500 kg/m3 and d = D instead.
+
+Mesh convergence: for each slot run on 5, 2.5 and 1.25 mm cells (coarse_,
+fit_, fine_), the rates over the common window [0.2 s, 0.4 s] (the rate is
+steady from 0.1 s; the fine runs end at 0.4 s), the observed order and the
+Richardson estimate; the same fits over the estimates (the converged
+rates) when every fit slot has one, and over the 1.25 mm rates.
 """
 import math
 import os
 import sys
 
-from sdfoam.beverloo import fit as fitBeverloo, fitFixedK, measure, outletSeries, readRuns, writeRateFile
+from sdfoam.beverloo import (fit as fitBeverloo, fitFixedK, measure, outletSeries, readRuns,
+                             richardson, timeMean, writeRateFile)
 
 work, results = sys.argv[1], sys.argv[2]
 packed = float(sys.argv[3]) if len(sys.argv) > 3 else 0.6
@@ -30,24 +37,39 @@ g, rhoBulk = 9.81, packed * 2500.0
 d = float(sys.argv[4]) if len(sys.argv) > 4 else 1.2e-3
 source = sys.argv[5] if len(sys.argv) > 5 and sys.argv[5] else ""
 tStart, window = 0.3, 0.1
+convergenceWindow = (0.2, 0.4)
 
 runs = readRuns(work)
 
 rates = {}
+series = {}
 with open(results, "w") as out:
     out.write("# benchmarks/muIBeverloo: planar flat-bottomed bin, bulkFlow muI (validation/planarSiloMuI),\n")
     out.write("# mass flow per metre of slot W [kg/s/m]; rho_b %.0f kg/m3, d %.1f mm; mu(I) %s\n"
               % (rhoBulk, d * 1e3, "calibrated (%s)" % source if source else "glass beads (Jop et al. 2006)"))
     out.write("# run b[mm] dx[mm] hFill[m] W[kg/s/m] window[s] constancy(max 0.1s dev) discharged_in_window\n")
     for name, o in runs:
-        series = outletSeries(os.path.join(work, name), scale=1 / o["dx"])
+        series[name] = outletSeries(os.path.join(work, name), scale=1 / o["dx"])
         fill = o["hFill"] * o["W"] * rhoBulk
-        tEnd, W, dev, frac = measure(series, fill, tStart, window,
+        if name.startswith("fine"):
+            # the fine runs end at 0.4 s: their rate over the common window
+            if series[name][-1][0] < convergenceWindow[1] - 1e-3:
+                out.write("# %s: not finished (t = %.3f s)\n" % (name, series[name][-1][0]))
+                del series[name]
+                continue
+            tEnd, W, dev, frac = measure(series[name], fill, convergenceWindow[0], window)
+            rates[name] = (o, W, dev)
+            out.write("%-11s %5.1f %4.2f %5.2f %9.4f %4.2f-%4.2f %.2e %.3f\n"
+                      % (name, o["b"] * 1e3, o["dx"] * 1e3, o["hFill"], W, convergenceWindow[0], tEnd,
+                         dev, frac))
+            writeRateFile(os.path.join(work, name + ".rate"), series[name], fill, "W[kg/s/m]")
+            continue
+        tEnd, W, dev, frac = measure(series[name], fill, tStart, window,
                                      0.6 if name.startswith("empty") else None)
         rates[name] = (o, W, dev)
         out.write("%-11s %5.1f %4.1f %5.2f %9.4f %4.2f-%4.2f %.2e %.3f\n"
                   % (name, o["b"] * 1e3, o["dx"] * 1e3, o["hFill"], W, tStart, tEnd, dev, frac))
-        writeRateFile(os.path.join(work, name + ".rate"), series, fill, "W[kg/s/m]")
+        writeRateFile(os.path.join(work, name + ".rate"), series[name], fill, "W[kg/s/m]")
 
     fit = [(o["b"], W) for name, (o, W, _) in rates.items() if name.startswith("fit")]
 
@@ -60,6 +82,35 @@ with open(results, "w") as out:
               % (", ".join("%.0f" % (b * 1e3) for b, _ in fit), n, C, k, res))
     out.write("# with k = 1.5: n %.3f +- %.3f (standard error), C %.4f\n" % (n15, se15, C15))
     out.write("# with n = 3/2, k = 1.5: C %.4f (slot law C = 1.03, Nedderman after Myers & Sellers)\n" % C32)
+    # mesh convergence: each slot on 5, 2.5 and 1.25 mm cells over the
+    # common window, the observed order and the Richardson estimate
+    converged, finest = [], []
+    for name, (o, _, _) in rates.items():
+        if not name.startswith("fit"):
+            continue
+        tag = name[len("fit"):]
+        if "coarse" + tag not in rates or "fine" + tag not in rates:
+            continue
+        w = [timeMean([(t, x) for t, x, _ in series[level + tag]], *convergenceWindow)
+             for level in ("coarse", "fit", "fine")]
+        p, estimate = richardson(*w)
+        if not converged:
+            out.write("# mesh convergence over t = %.1f-%.1f s: W on 5, 2.5, 1.25 mm cells, observed order,"
+                      " Richardson estimate W_h->0, fine / estimate\n" % convergenceWindow)
+        out.write("#   b %4.1f mm: %.4f %.4f %.4f  order %.2f  W_h->0 %.4f  %.4f\n"
+                  % (o["b"] * 1e3, w[0], w[1], w[2], p, estimate, w[2] / estimate))
+        finest.append((o["b"], w[2]))
+        if math.isfinite(estimate):
+            converged.append((o["b"], estimate))
+    for label, points in (("1.25 mm cells (t = %.1f-%.1f s)" % convergenceWindow, finest),
+                          ("the Richardson estimates", converged)):
+        if len(points) == len(fit) and len(points) >= 3:
+            nR, CR, kR, resR = fitBeverloo(points, d, prefactor, [k / 100.0 for k in range(0, 601)])
+            C32R = sum(W / (prefactor * (b - 1.5 * d) ** 1.5) for b, W in points) / len(points)
+            out.write("# Beverloo fit over %s: n %.3f, C %.4f, k %.2f (residual %.2e);"
+                      " with n = 3/2, k = 1.5: C %.4f\n" % (label, nR, CR, kR, resR, C32R))
+        elif points:
+            out.write("# no Beverloo fit over %s: %d of %d slots\n" % (label, len(points), len(fit)))
     # the ratios of the runs that ran (run -only leaves some out)
     if "height_b20" in rates and "coarse_b20" in rates:
         out.write("# height_b20 / coarse_b20 (fill height 0.42 / 0.34 m): %.4f\n"

@@ -155,3 +155,100 @@ test_calibration_from_case()
     grep -q "entry 'T' of .* is overridden" "$log" && { echo "T reported overridden although used"; return 1; }
     echo "T from calibrationDict when the field is missing: ok"
 }
+
+# -fromCase with the rheology calibrated: the rheology cells' pressure is
+# the median of the case's p over the cells holding material that shear
+# (gammaDot >= minGammaDotRatio x its largest); without gammaDot every cell
+# holding material; the entry rheology/pressure is then optional and, when
+# given, overridden (or used, when the case wrote no p); no p and no entry,
+# or a median <= 0: FatalError naming p and the entry; without -fromCase the
+# entry stays required
+test_calibration_from_case_rheology()
+{
+    local dir="$workRoot/calibrationFromCaseRheology" log
+    fresh_rheology_case()
+    {
+        rm -rf "$dir"; cp -r "$projectDir/tests/calibration/fromCase" "$dir"
+        foamDictionary -entry diffusivity/model -set none "$dir/constant/granularProperties" > /dev/null
+        foamDictionary -entry coefficients -set "(rheology)" "$dir/system/calibrationDict" > /dev/null
+        foamDictionary -entry rheology -set "{ inertialNumber (0.05 0.1); }" "$dir/system/calibrationDict" > /dev/null
+        # cells: material in 1, 2, 4, 5 (3 is below phiMin); gammaDot 2, 50,
+        # 0.5, 0.01 of them: cell 5 below 1e-3 x 50
+        sed 's/object T;/object p;/; s/\[0 2 -2 0 0 0 0\]/[1 -1 -2 0 0 0 0]/; s/5(0.004 0.04 10 0.01 0.001)/5(100 400 9 200 800)/' \
+            "$dir/2/T" > "$dir/2/p"
+        sed 's/object T;/object gammaDot;/; s/\[0 2 -2 0 0 0 0\]/[0 0 -1 0 0 0 0]/; s/5(0.004 0.04 10 0.01 0.001)/5(2 50 1e3 0.5 0.01)/' \
+            "$dir/2/T" > "$dir/2/gammaDot"
+    }
+    expect_in() # LOG LINE...
+    {
+        local f="$1" l; shift
+        for l in "$@"
+        do
+            grep -qF -- "$l" "$f" || { echo "missing in $f: '$l'"; grep -e "-fromCase" -e FATAL -e rheology -A1 "$f" | head -20; return 1; }
+        done
+    }
+
+    # p of the shearing cells 100, 400, 200: the median 200 Pa
+    fresh_rheology_case
+    log="$dir/log.shearing"
+    calibrateGranularMixture -case "$dir" -fromCase -dryRun > "$log" 2>&1 || { tail -20 "$log"; return 1; }
+    grep -e "-fromCase rheology" -e sigma_yy "$log"
+    expect_in "$log" \
+        "-fromCase rheology: p over 3 cells holding material with gammaDot >= 0.001 x its largest: [100, 400] Pa, median 200 Pa" \
+        "x 1 replicas) at sigma_yy 200 Pa," || return 1
+
+    # the entry given: overridden
+    foamDictionary -entry rheology/pressure -set 3000 "$dir/system/calibrationDict" > /dev/null
+    log="$dir/log.overridden"
+    calibrateGranularMixture -case "$dir" -fromCase -dryRun > "$log" 2>&1 || { tail -20 "$log"; return 1; }
+    expect_in "$log" "median 200 Pa" "(the entry rheology/pressure 3000 Pa is overridden)" "x 1 replicas) at sigma_yy 200 Pa," || return 1
+
+    # no gammaDot: every cell holding material, p 100, 400, 200, 800: the
+    # upper median 400
+    rm "$dir/2/gammaDot"
+    log="$dir/log.noShear"
+    calibrateGranularMixture -case "$dir" -fromCase -dryRun > "$log" 2>&1 || { tail -20 "$log"; return 1; }
+    expect_in "$log" "p over 4 cells holding material (no field gammaDot: every one): [100, 800] Pa, median 400 Pa" \
+        "x 1 replicas) at sigma_yy 400 Pa," || return 1
+
+    # no p, the entry given: the entry is used
+    rm "$dir/2/p"
+    log="$dir/log.noPEntry"
+    calibrateGranularMixture -case "$dir" -fromCase -dryRun > "$log" 2>&1 || { tail -20 "$log"; return 1; }
+    expect_in "$log" "no field p at time 2" "the entry rheology/pressure 3000 Pa is used" "x 1 replicas) at sigma_yy 3000 Pa," || return 1
+    echo "no p, the entry: $(grep "no field p" "$log")"
+
+    # no p and no entry: FatalError naming p and the entry, nothing run
+    fresh_rheology_case
+    rm "$dir/2/p"
+    log="$dir/log.noP"
+    if calibrateGranularMixture -case "$dir" -fromCase > "$log" 2>&1
+    then
+        echo "no p and no pressure accepted"; return 1
+    fi
+    expect_in "$log" "FOAM FATAL" "the field p is missing" "2/p" "give 'pressure' [Pa]" || return 1
+    grep -q "done in" "$log" && { echo "DEM ran"; return 1; }
+    [ ! -e "$dir/constant/calibration.h5" ] || { echo "calibration.h5 written"; return 1; }
+    echo "no p: $(grep -A1 "FOAM FATAL" "$log" | sed -n 2p)"
+
+    # the shearing cells' median <= 0 (a weightless case): refused
+    fresh_rheology_case
+    sed -i 's/5(100 400 9 200 800)/5(-100 0 9 -5 800)/' "$dir/2/p"
+    log="$dir/log.negative"
+    if calibrateGranularMixture -case "$dir" -fromCase -dryRun > "$log" 2>&1
+    then
+        echo "median pressure <= 0 accepted"; return 1
+    fi
+    expect_in "$log" "FOAM FATAL" "median pressure -5 Pa" "is not > 0" || return 1
+    echo "median <= 0: $(grep -A1 "FOAM FATAL" "$log" | sed -n 2p)"
+
+    # without -fromCase the entry stays required
+    fresh_rheology_case
+    log="$dir/log.noFromCase"
+    if calibrateGranularMixture -case "$dir" -dryRun > "$log" 2>&1
+    then
+        echo "no pressure accepted without -fromCase"; return 1
+    fi
+    expect_in "$log" "FOAM FATAL IO ERROR" "Missing entry 'pressure'" || return 1
+    echo "without -fromCase: $(grep -A1 "FOAM FATAL" "$log" | sed -n 2p)"
+}

@@ -98,7 +98,11 @@ int main(int argc, char *argv[])
         )
     );
 
-    const calibrationSettings settings(dict, species[0], species[1]);
+    // With -fromCase the case gives the rheology cells' pressure
+    calibrationSettings settings
+    (
+        dict, species[0], species[1], args.found("fromCase")
+    );
 
     std::optional<caseEnvelope> fromCase;
     if (args.found("fromCase"))
@@ -107,6 +111,10 @@ int main(int argc, char *argv[])
         (
             runTime, properties, settings, args.get<word>("fromCase")
         );
+        if (fromCase->rheologyPressure > 0)
+        {
+            settings.setRheologyPressure(fromCase->rheologyPressure);
+        }
         if (fromCase->coefficients.empty() && !settings.calibratesRheology())
         {
             Info<< "Nothing to calibrate: constant/granularProperties switches"

@@ -161,6 +161,141 @@ bool mechanismOn(const dictionary& properties, const word& mechanism)
     return properties.subDict(mechanism).get<word>("model") != "none";
 }
 
+//- The pressure scale of a case for its rheology cells: the median of the
+//  bulk's pressure p (written by bulkFlow muI) over the cells that hold
+//  material (phi >= phiMin) and shear (gammaDot >= minRatio times its
+//  largest, when the case wrote gammaDot: the flowing zones, where mu(I)
+//  decides the flow). The median, not the largest: mu(I) of stiff grains
+//  does not depend on p (the cells report k_n/(p d)), and the median is
+//  where most of the flowing bulk is.
+scalar rheologyPressureOfCase
+(
+    const std::vector<fileName>& sources,
+    const word& time,
+    const Time& runTime,
+    const calibrationSettings& settings,
+    const scalar phiMin,
+    const scalar minRatio
+)
+{
+    const word& fine = settings.fine().name;
+    const word& coarse = settings.coarse().name;
+    if (!isFile(sources[0]/"p"))
+    {
+        if (settings.rheologyPressureGiven())
+        {
+            Info<< "-fromCase rheology: no field p at time " << time
+                << " (the bulk's pressure, written by bulkFlow muI): the"
+                << " entry rheology/pressure "
+                << settings.rheology().pressure << " Pa is used" << nl;
+            return 0;
+        }
+        FatalErrorInFunction
+            << "-fromCase rheology: the field p is missing: no file "
+            << sources[0]/"p" << nl
+            << "    The pressure of the rheology cells is derived from the"
+            << " bulk's pressure p, which bulkFlow muI writes: run the case"
+            << " with 'bulkFlow { model muI; }' to time " << time
+            << ", or give 'pressure' [Pa] in the rheology entry of "
+            << settings.dict().name() << nl << exit(FatalError);
+    }
+    if (!(minRatio > 0 && minRatio <= 1))
+    {
+        FatalIOErrorInFunction(settings.dict())
+            << "Entry 'fromCase/minGammaDotRatio' " << minRatio
+            << " is outside (0, 1]: the cells whose pressure sets the"
+            << " rheology's, by their shear rate as a fraction of the largest"
+            << nl << exit(FatalIOError);
+    }
+    const bool haveShear = isFile(sources[0]/"gammaDot");
+
+    // (p, gammaDot) of the cells holding material, over every source
+    std::vector<std::pair<scalar, scalar>> cells;
+    for (const fileName& dir : sources)
+    {
+        const CellValues nFine(readCellValues(dir/("n." + fine), runTime));
+        const CellValues nCoarse(readCellValues(dir/("n." + coarse), runTime));
+        const CellValues p(readCellValues(dir/"p", runTime));
+        const CellValues shear
+        (
+            haveShear ? readCellValues(dir/"gammaDot", runTime) : CellValues()
+        );
+        label n = 1;
+        for (const CellValues* f : {&nFine, &nCoarse, &p, &shear})
+        {
+            if (!f->uniform)
+            {
+                if (n > 1 && f->values.size() != n)
+                {
+                    FatalErrorInFunction
+                        << "-fromCase: the fields in " << dir << " have"
+                        << " different numbers of cells" << nl
+                        << exit(FatalError);
+                }
+                n = f->values.size();
+            }
+        }
+        for (label celli = 0; celli < n; ++celli)
+        {
+            if (nFine[celli] + nCoarse[celli] >= phiMin)
+            {
+                cells.push_back({p[celli], haveShear ? shear[celli] : 1});
+            }
+        }
+    }
+    scalar shearMax = 0;
+    for (const auto& c : cells)
+    {
+        shearMax = max(shearMax, c.second);
+    }
+    std::vector<scalar> pressures;
+    for (const auto& c : cells)
+    {
+        if (shearMax > 0 && c.second >= minRatio*shearMax)
+        {
+            pressures.push_back(c.first);
+        }
+    }
+    if (pressures.empty())
+    {
+        FatalErrorInFunction
+            << "-fromCase rheology: no cell at time " << time << " holds"
+            << " material and shears (gammaDot zero in every cell holding"
+            << " material): give 'pressure' [Pa] in the rheology entry of "
+            << settings.dict().name() << nl << exit(FatalError);
+    }
+    std::sort(pressures.begin(), pressures.end());
+    const scalar median = pressures[pressures.size()/2];
+    if (!(median > 0))
+    {
+        FatalErrorInFunction
+            << "-fromCase rheology: the median pressure " << median
+            << " Pa (range [" << fmt(pressures.front()).c_str() << ", "
+            << fmt(pressures.back()).c_str() << "] Pa) of the flowing cells"
+            << " at time " << time << " is not > 0"
+            << " (a case without weight on its bulk?): give 'pressure' [Pa]"
+            << " in the rheology entry of " << settings.dict().name() << nl
+            << exit(FatalError);
+    }
+    Info<< "-fromCase rheology: p over " << label(pressures.size())
+        << " cells holding material"
+        << (
+               haveShear
+             ? " with gammaDot >= " + fmt(minRatio) + " x its largest"
+             : std::string(" (no field gammaDot: every one)")
+           ).c_str()
+        << ": [" << fmt(pressures.front()).c_str() << ", "
+        << fmt(pressures.back()).c_str() << "] Pa, median "
+        << fmt(median).c_str() << " Pa -> the rheology cells' pressure";
+    if (settings.rheologyPressureGiven())
+    {
+        Info<< " (the entry rheology/pressure "
+            << settings.rheology().pressure << " Pa is overridden)";
+    }
+    Info<< nl;
+    return median;
+}
+
 } // End anonymous namespace
 
 
@@ -209,7 +344,8 @@ Foam::caseEnvelope Foam::deriveEnvelope
         Info<< (&c == &env.coefficients.first() ? "" : " ") << c;
     }
     Info<< ")" << nl;
-    if (env.coefficients.empty())
+    const bool rheology = settings.calibratesRheology();
+    if (env.coefficients.empty() && !rheology)
     {
         return env;
     }
@@ -217,15 +353,16 @@ Foam::caseEnvelope Foam::deriveEnvelope
     // Options
     const dictionary& opts = dict.subOrEmptyDict("fromCase");
     // The ratio of the other drive is an unknown key here (it would be
-    // ignored)
-    modelCoeffs::checkKeys
-    (
-        opts,
-        wordList
-        ({
-            "points", settings.sheared() ? "minGammaDotRatio" : "minTRatio"
-        })
-    );
+    // ignored); the rheology's pressure is taken where the bulk shears
+    wordList optionKeys
+    ({
+        "points", settings.sheared() ? "minGammaDotRatio" : "minTRatio"
+    });
+    if (rheology && !settings.sheared())
+    {
+        optionKeys.append("minGammaDotRatio");
+    }
+    modelCoeffs::checkKeys(opts, optionKeys);
     const label points = opts.getOrDefault<label>("points", 3);
     if (points < 1)
     {
@@ -316,6 +453,20 @@ Foam::caseEnvelope Foam::deriveEnvelope
         {
             sources.push_back(caseDir/("processor" + Foam::name(proci))/time);
         }
+    }
+
+    if (rheology)
+    {
+        env.rheologyPressure = rheologyPressureOfCase
+        (
+            sources, time, runTime, settings, phiMin,
+            opts.getOrDefault<scalar>("minGammaDotRatio", 1e-3)
+        );
+    }
+    if (env.coefficients.empty())
+    {
+        Info<< endl;
+        return env;
     }
 
     const bool haveRate = isFile(sources[0]/rate);

@@ -41,11 +41,14 @@ def hopperRate(D0, d, hopperHalfAngle, C=0.58, k=1.5, g=9.81):
 
 
 def readRuns(work):
-    """[(name, {option without '-': float})] from WORK/runs.txt."""
+    """[(name, {option without '-': float})] from WORK/runs.txt, the runs
+    whose cases wrote an outlet record (run -only leaves some out)."""
     runs = []
     for line in open(os.path.join(work, "runs.txt")):
         if line.strip():
             name, *opts = line.split()
+            if not os.path.isdir(os.path.join(work, name, "postProcessing", "outletComposition")):
+                continue
             o = dict(zip(opts[::2], opts[1::2]))
             runs.append((name, {k.lstrip("-"): float(v) for k, v in o.items()}))
     return runs
@@ -136,3 +139,17 @@ def fitFixedK(points, d, prefactor, k):
     res, n, icept, sxx = _lsq(points, d, k)
     se = math.sqrt(res / (len(points) - 2) / sxx) if len(points) > 2 else float("nan")
     return n, se, math.exp(icept) / prefactor
+
+
+def richardson(coarse, medium, fine, ratio=2.0):
+    """(observed order, Richardson estimate) of a quantity on three meshes
+    refined by ratio: p = ln((coarse - medium)/(medium - fine))/ln(ratio),
+    the estimate fine + (fine - medium)/(ratio^p - 1); (nan, nan) when the
+    three do not converge monotonically (the differences change sign or
+    do not shrink)."""
+    d1, d2 = coarse - medium, medium - fine
+    if d1 == 0 or d2 == 0 or d1 * d2 < 0 or abs(d2) >= abs(d1):
+        return float("nan"), float("nan")
+    p = math.log(d1 / d2) / math.log(ratio)
+    return p, fine + (fine - medium) / (ratio ** p - 1)
+

@@ -227,7 +227,8 @@ Foam::calibrationSettings::calibrationSettings
 (
     const dictionary& calibrationDict,
     const granularSpecies& fine,
-    const granularSpecies& coarse
+    const granularSpecies& coarse,
+    const bool rheologyPressureFromCase
 )
 :
     dict_(calibrationDict),
@@ -292,7 +293,7 @@ Foam::calibrationSettings::calibrationSettings
     }
     if (calibratesRheology())
     {
-        readRheology(dict);
+        readRheology(dict, rheologyPressureFromCase);
     }
     else if (dict.found("rheology"))
     {
@@ -460,7 +461,11 @@ void Foam::calibrationSettings::readFiniteSize(const dictionary& dict)
 }
 
 
-void Foam::calibrationSettings::readRheology(const dictionary& dict)
+void Foam::calibrationSettings::readRheology
+(
+    const dictionary& dict,
+    const bool pressureOptional
+)
 {
     if (!dict.isDict("rheology"))
     {
@@ -503,20 +508,25 @@ void Foam::calibrationSettings::readRheology(const dictionary& dict)
         rd, "inertialNumber", 0, 1 + SMALL,
         "inertial numbers of the rheology cells, each in (0, 1]"
     );
-    if (!rd.found("pressure"))
+    r.pressureGiven = rd.found("pressure");
+    if (!r.pressureGiven && !pressureOptional)
     {
         FatalIOErrorInFunction(rd)
             << "Missing entry 'pressure' [Pa]: the normal stress sigma_yy the"
             << " rheology cells are sheared at (the pressure scale of the case,"
-            << " e.g. rho_bulk g H/2 of its depth H)" << nl << exit(FatalIOError);
+            << " e.g. rho_bulk g H/2 of its depth H; -fromCase derives it from"
+            << " the case's field p)" << nl << exit(FatalIOError);
     }
-    r.pressure = rd.get<scalar>("pressure");
-    if (!(r.pressure > 0) || !std::isfinite(r.pressure))
+    if (r.pressureGiven)
     {
-        FatalIOErrorInFunction(rd)
-            << "Entry 'pressure " << r.pressure << "' must be a pressure > 0 Pa"
-            << " (the normal stress sigma_yy of the rheology cells)" << nl
-            << exit(FatalIOError);
+        r.pressure = rd.get<scalar>("pressure");
+        if (!(r.pressure > 0) || !std::isfinite(r.pressure))
+        {
+            FatalIOErrorInFunction(rd)
+                << "Entry 'pressure " << r.pressure << "' must be a pressure > 0"
+                << " Pa (the normal stress sigma_yy of the rheology cells)" << nl
+                << exit(FatalIOError);
+        }
     }
     r.x = rd.getOrDefault<scalar>("x", 0.5);
     if (!(r.x > 0 && r.x < 1))
@@ -717,6 +727,19 @@ Foam::wordList Foam::calibrationSettings::transportCoefficients() const
         }
     }
     return transport;
+}
+
+
+void Foam::calibrationSettings::setRheologyPressure(const scalar p)
+{
+    if (!(p > 0) || !std::isfinite(p))
+    {
+        FatalErrorInFunction
+            << "The rheology cells' pressure from the case, " << p << " Pa,"
+            << " is not a pressure > 0: give 'pressure' in the rheology"
+            << " entry of " << dict_.name() << nl << exit(FatalError);
+    }
+    rheology_.pressure = p;
 }
 
 
