@@ -3,6 +3,17 @@
 # tests/calibration/fromCase (sourced by tests/run; tests
 # calibration/fromCase/*).
 
+# LOG LINE...: every LINE appears verbatim in LOG (else the log's -fromCase,
+# rheology and error lines are shown)
+expect_lines()
+{
+    local f="$1" l; shift
+    for l in "$@"
+    do
+        grep -qF -- "$l" "$f" || { echo "missing in $f: '$l'"; grep -e "-fromCase" -e FATAL -e rheology -A1 "$f" | head -20; return 1; }
+    done
+}
+
 # -fromCase on a hand-made case (tests/calibration/fromCase, 5 cells,
 # no mesh): the envelope derived from the fields equals the hand values
 # (cells below phiMin ignored, phi clipped to 0.6, T log-spaced), a named
@@ -14,14 +25,6 @@ test_calibration_from_case()
 {
     local dir="$workRoot/calibrationFromCase" log
     fresh_from_case() { rm -rf "$dir"; cp -r "$projectDir/tests/calibration/fromCase" "$dir"; }
-    expect_lines() # LOG LINE...: every LINE appears verbatim in LOG
-    {
-        local f="$1" l; shift
-        for l in "$@"
-        do
-            grep -qF -- "$l" "$f" || { echo "missing in $f: '$l'"; grep -- "-fromCase\|FATAL" -A1 "$f" | head -20; return 1; }
-        done
-    }
 
     # latest time (2): hand values
     fresh_from_case
@@ -179,21 +182,13 @@ test_calibration_from_case_rheology()
         sed 's/object T;/object gammaDot;/; s/\[0 2 -2 0 0 0 0\]/[0 0 -1 0 0 0 0]/; s/5(0.004 0.04 10 0.01 0.001)/5(2 50 1e3 0.5 0.01)/' \
             "$dir/2/T" > "$dir/2/gammaDot"
     }
-    expect_in() # LOG LINE...
-    {
-        local f="$1" l; shift
-        for l in "$@"
-        do
-            grep -qF -- "$l" "$f" || { echo "missing in $f: '$l'"; grep -e "-fromCase" -e FATAL -e rheology -A1 "$f" | head -20; return 1; }
-        done
-    }
 
     # p of the shearing cells 100, 400, 200: the median 200 Pa
     fresh_rheology_case
     log="$dir/log.shearing"
     calibrateGranularMixture -case "$dir" -fromCase -dryRun > "$log" 2>&1 || { tail -20 "$log"; return 1; }
     grep -e "-fromCase rheology" -e sigma_yy "$log"
-    expect_in "$log" \
+    expect_lines "$log" \
         "-fromCase rheology: p over 3 cells holding material with gammaDot >= 0.001 x its largest: [100, 400] Pa, median 200 Pa" \
         "x 1 replicas) at sigma_yy 200 Pa," || return 1
 
@@ -201,21 +196,21 @@ test_calibration_from_case_rheology()
     foamDictionary -entry rheology/pressure -set 3000 "$dir/system/calibrationDict" > /dev/null
     log="$dir/log.overridden"
     calibrateGranularMixture -case "$dir" -fromCase -dryRun > "$log" 2>&1 || { tail -20 "$log"; return 1; }
-    expect_in "$log" "median 200 Pa" "(the entry rheology/pressure 3000 Pa is overridden)" "x 1 replicas) at sigma_yy 200 Pa," || return 1
+    expect_lines "$log" "median 200 Pa" "(the entry rheology/pressure 3000 Pa is overridden)" "x 1 replicas) at sigma_yy 200 Pa," || return 1
 
     # no gammaDot: every cell holding material, p 100, 400, 200, 800: the
     # upper median 400
     rm "$dir/2/gammaDot"
     log="$dir/log.noShear"
     calibrateGranularMixture -case "$dir" -fromCase -dryRun > "$log" 2>&1 || { tail -20 "$log"; return 1; }
-    expect_in "$log" "p over 4 cells holding material (no field gammaDot: every one): [100, 800] Pa, median 400 Pa" \
+    expect_lines "$log" "p over 4 cells holding material (no field gammaDot: every one): [100, 800] Pa, median 400 Pa" \
         "x 1 replicas) at sigma_yy 400 Pa," || return 1
 
     # no p, the entry given: the entry is used
     rm "$dir/2/p"
     log="$dir/log.noPEntry"
     calibrateGranularMixture -case "$dir" -fromCase -dryRun > "$log" 2>&1 || { tail -20 "$log"; return 1; }
-    expect_in "$log" "no field p at time 2" "the entry rheology/pressure 3000 Pa is used" "x 1 replicas) at sigma_yy 3000 Pa," || return 1
+    expect_lines "$log" "no field p at time 2" "the entry rheology/pressure 3000 Pa is used" "x 1 replicas) at sigma_yy 3000 Pa," || return 1
     echo "no p, the entry: $(grep "no field p" "$log")"
 
     # no p and no entry: FatalError naming p and the entry, nothing run
@@ -226,7 +221,7 @@ test_calibration_from_case_rheology()
     then
         echo "no p and no pressure accepted"; return 1
     fi
-    expect_in "$log" "FOAM FATAL" "the field p is missing" "2/p" "give 'pressure' [Pa]" || return 1
+    expect_lines "$log" "FOAM FATAL" "the field p is missing" "2/p" "give 'pressure' [Pa]" || return 1
     grep -q "done in" "$log" && { echo "DEM ran"; return 1; }
     [ ! -e "$dir/constant/calibration.h5" ] || { echo "calibration.h5 written"; return 1; }
     echo "no p: $(grep -A1 "FOAM FATAL" "$log" | sed -n 2p)"
@@ -239,7 +234,7 @@ test_calibration_from_case_rheology()
     then
         echo "median pressure <= 0 accepted"; return 1
     fi
-    expect_in "$log" "FOAM FATAL" "median pressure -5 Pa" "is not > 0" || return 1
+    expect_lines "$log" "FOAM FATAL" "median pressure -5 Pa" "is not > 0" || return 1
     echo "median <= 0: $(grep -A1 "FOAM FATAL" "$log" | sed -n 2p)"
 
     # without -fromCase the entry stays required
@@ -249,6 +244,6 @@ test_calibration_from_case_rheology()
     then
         echo "no pressure accepted without -fromCase"; return 1
     fi
-    expect_in "$log" "FOAM FATAL IO ERROR" "Missing entry 'pressure'" || return 1
+    expect_lines "$log" "FOAM FATAL IO ERROR" "Missing entry 'pressure'" || return 1
     echo "without -fromCase: $(grep -A1 "FOAM FATAL" "$log" | sed -n 2p)"
 }

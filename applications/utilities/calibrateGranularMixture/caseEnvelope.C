@@ -16,6 +16,7 @@
 #include "OSspecific.H"
 
 #include <algorithm>
+#include <initializer_list>
 #include <cstdlib>
 #include <utility>
 #include <vector>
@@ -126,6 +127,33 @@ CellValues readCellValues(const fileName& file, const Time& runTime)
 }
 
 
+//- The number of cells of fields read from dir: that of the nonuniform ones (1 when
+//  all are uniform); FatalError when they differ
+label cellCount
+(
+    const fileName& dir,
+    std::initializer_list<const CellValues*> fields
+)
+{
+    label n = 1;
+    for (const CellValues* f : fields)
+    {
+        if (!f->uniform)
+        {
+            if (n > 1 && f->values.size() != n)
+            {
+                FatalErrorInFunction
+                    << "-fromCase: the fields in " << dir << " have"
+                    << " different numbers of cells" << nl
+                    << exit(FatalError);
+            }
+            n = f->values.size();
+        }
+    }
+    return n;
+}
+
+
 //- The time directories of a directory (names that read as numbers)
 wordList timeDirectories(const fileName& dir)
 {
@@ -220,21 +248,7 @@ scalar rheologyPressureOfCase
         (
             haveShear ? readCellValues(dir/"gammaDot", runTime) : CellValues()
         );
-        label n = 1;
-        for (const CellValues* f : {&nFine, &nCoarse, &p, &shear})
-        {
-            if (!f->uniform)
-            {
-                if (n > 1 && f->values.size() != n)
-                {
-                    FatalErrorInFunction
-                        << "-fromCase: the fields in " << dir << " have"
-                        << " different numbers of cells" << nl
-                        << exit(FatalError);
-                }
-                n = f->values.size();
-            }
-        }
+        const label n = cellCount(dir, {&nFine, &nCoarse, &p, &shear});
         for (label celli = 0; celli < n; ++celli)
         {
             if (nFine[celli] + nCoarse[celli] >= phiMin)
@@ -496,21 +510,7 @@ Foam::caseEnvelope Foam::deriveEnvelope
         (
             haveRate ? readCellValues(dir/rate, runTime) : CellValues()
         );
-        label n = 1;
-        for (const CellValues* f : {&nFine, &nCoarse, &rateValues})
-        {
-            if (!f->uniform)
-            {
-                if (n > 1 && f->values.size() != n)
-                {
-                    FatalErrorInFunction
-                        << "-fromCase: the fields in " << dir << " have"
-                        << " different numbers of cells" << nl
-                        << exit(FatalError);
-                }
-                n = f->values.size();
-            }
-        }
+        const label n = cellCount(dir, {&nFine, &nCoarse, &rateValues});
         cells += n;
         for (label celli = 0; celli < n; ++celli)
         {
