@@ -84,7 +84,7 @@ with open(results, "w") as out:
     out.write("# with n = 3/2, k = 1.5: C %.4f (slot law C = 1.03, Nedderman after Myers & Sellers)\n" % C32)
     # mesh convergence: each slot on 5, 2.5 and 1.25 mm cells over the
     # common window, the observed order and the Richardson estimate
-    converged, finest = [], []
+    converged, finest, convergence = [], [], []
     for name, (o, _, _) in rates.items():
         if not name.startswith("fit"):
             continue
@@ -102,6 +102,7 @@ with open(results, "w") as out:
         finest.append((o["b"], w[2]))
         if math.isfinite(estimate):
             converged.append((o["b"], estimate))
+        convergence.append((o["b"], w, estimate))
     for label, points in (("1.25 mm cells (t = %.1f-%.1f s)" % convergenceWindow, finest),
                           ("the Richardson estimates", converged)):
         if len(points) == len(fit) and len(points) >= 3:
@@ -119,6 +120,15 @@ with open(results, "w") as out:
         if "coarse_b%d" % b in rates and "fit_b%d" % b in rates:
             out.write("# coarse_b%d / fit_b%d (5 / 2.5 mm cells): %.4f\n"
                       % (b, b, rates["coarse_b%d" % b][1] / rates["fit_b%d" % b][1]))
+    # for the plot: W over the Richardson estimate against the cell size, per slot
+    with open(os.path.join(work, "convergence.dat"), "w") as f:
+        f.write("# dx[mm] W/W_h->0, one block per slot headed by its name (gnuplot columnheader)\n")
+        for b, w, estimate in convergence:
+            if math.isfinite(estimate):
+                f.write("b=%.0fmm -\n" % (b * 1e3))
+                for dx, rate in zip((5.0, 2.5, 1.25), w):
+                    f.write("%.3f %.5f\n" % (dx, rate / estimate))
+                f.write("\n\n")
     with open(os.path.join(work, "fit.dat"), "w") as f:
         f.write("# b[m] W[kg/s/m] fit(n,C,k) slotLaw(1.03, k 1.5, n 1.5)\n")
         for b, W in sorted(fit):

@@ -61,9 +61,15 @@ def main():
             if l.startswith("#") or not l.strip():
                 continue
             v = l.split()
-            I, mu, muErr, phi, phiErr, steady = float(v[2]), float(v[4]), float(v[5]), float(v[6]), float(v[7]), v[12]
+            # the tables before the bond order column Q6 (index 9) have 13 numbers
+            q6 = len(v) > 14 and v[13] in ("yes", "no")
+            steady = v[13] if q6 else v[12]
+            regime = " ".join(v[14:] if q6 else v[13:]).strip('"')
+            I, mu, muErr, phi, phiErr = float(v[2]), float(v[4]), float(v[5]), float(v[6]), float(v[7])
             if steady != "yes":
                 skipped.append("%.3g (not steady)" % I)
+            elif regime != "dense flow":
+                skipped.append("%.3g (%s)" % (I, regime))
             elif I <= IMAX * 1.01:
                 rows.append((I, mu, muErr, phi, phiErr))
         for r in rows:
