@@ -51,12 +51,12 @@ with open(results, "w") as out:
     for name, o in runs:
         series[name] = outletSeries(os.path.join(work, name), scale=1 / o["dx"])
         fill = o["hFill"] * o["W"] * rhoBulk
+        if series[name][-1][0] < o["endTime"] - 1e-3:
+            out.write("# %s: not finished (t = %.3f s of %g)\n" % (name, series[name][-1][0], o["endTime"]))
+            del series[name]
+            continue
         if name.startswith("fine"):
             # the fine runs end at 0.4 s: their rate over the common window
-            if series[name][-1][0] < convergenceWindow[1] - 1e-3:
-                out.write("# %s: not finished (t = %.3f s)\n" % (name, series[name][-1][0]))
-                del series[name]
-                continue
             tEnd, W, dev, frac = measure(series[name], fill, convergenceWindow[0], window)
             rates[name] = (o, W, dev)
             out.write("%-11s %5.1f %4.2f %5.2f %9.4f %4.2f-%4.2f %.2e %.3f\n"
@@ -94,7 +94,7 @@ with open(results, "w") as out:
         w = [timeMean([(t, x) for t, x, _ in series[level + tag]], *convergenceWindow)
              for level in ("coarse", "fit", "fine")]
         p, estimate = richardson(*w)
-        if not converged:
+        if not convergence:
             out.write("# mesh convergence over t = %.1f-%.1f s: W on 5, 2.5, 1.25 mm cells, observed order,"
                       " Richardson estimate W_h->0, fine / estimate\n" % convergenceWindow)
         out.write("#   b %4.1f mm: %.4f %.4f %.4f  order %.2f  W_h->0 %.4f  %.4f\n"

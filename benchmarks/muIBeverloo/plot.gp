@@ -20,7 +20,7 @@ set title "mesh convergence over t = 0.2-0.4 s (b = 15, 20, 25, 30 mm)"
 set xlabel "cell size dx [mm]"; set ylabel "W / W(dx -> 0) (Richardson)"
 set xrange [0:5.5]; set yrange [*:*]
 set key bottom left
-if (system("test -s ".work."/convergence.dat && echo 1") eq "1") {
+if (system("grep -q ^b= ".work."/convergence.dat 2>/dev/null && echo 1") eq "1") {
     plot for [i=0:3] work."/convergence.dat" index i u 1:2 w lp pt 7 t columnheader(1)
 } else {
     set label 1 "no fine runs (run without -only, or -only fine)" at graph 0.1, graph 0.5

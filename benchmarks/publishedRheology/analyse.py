@@ -61,7 +61,7 @@ def main():
             if l.startswith("#") or not l.strip():
                 continue
             v = l.split()
-            # the tables before the bond order column Q6 (index 9) have 13 numbers
+            # the tables before the bond order column Q6 (index 9) have 12 numbers
             q6 = len(v) > 14 and v[13] in ("yes", "no")
             steady = v[13] if q6 else v[12]
             regime = " ".join(v[14:] if q6 else v[13:]).strip('"')

@@ -17,7 +17,7 @@
 //   output               prefix of the files written (default rheology): <output>-cells.dat
 //                        (one row per cell, with its steady check and regime) and
 //                        <output>-muICoeffs (the muI entries with their errors)
-// A cell that is not a steady dense flow (jammed, a gas, or drifting) or that the run
+// A cell that is not a steady dense flow (jammed, a gas, crystallised, or drifting) or that the run
 // refused (a pressure the barostat could not hold, a cell blown into a gas) is reported,
 // written as such in the table and left out of the fit; the fit needs 4 cells.
 #include "CellConfig.hpp"
@@ -120,7 +120,7 @@ int main(int argc, char** argv)
         std::ofstream table(output + "-cells.dat");
         table << "# rheologyEnvelope: pressure-controlled sheared cells at targetPressure " << p
               << " Pa; d " << d << " m, rho_s " << rho << " kg/m3; errors: block standard errors\n"
-              << "# I_target gammaDot[1/s] I I_err mu mu_err phi phi_err Z sigma_yy[Pa]"
+              << "# I_target gammaDot[1/s] I I_err mu mu_err phi phi_err Z Q6 sigma_yy[Pa]"
                  " sigma_yy_err T[m2/s2] steady regime\n";
         std::vector<sdf::fit::RheologyPoint> points;
         const auto start = std::chrono::steady_clock::now();
@@ -142,7 +142,7 @@ int main(int argc, char** argv)
                 // a cell the barostat could not hold, or one blown into a gas: reported,
                 // left out, the envelope goes on
                 table << I << " " << s.simulation.shearRate
-                      << " nan nan nan nan nan nan nan nan nan nan no \"refused\"\n";
+                      << " nan nan nan nan nan nan nan nan nan nan nan no \"refused\"\n";
                 table.flush();
                 std::printf
                 (
@@ -157,7 +157,7 @@ int main(int argc, char** argv)
                   << h.inertialNumber.standardError << " " << h.stressRatio.value << " "
                   << h.stressRatio.standardError << " " << h.solidsFraction.value << " "
                   << h.solidsFraction.standardError << " " << h.coordinationNumber.value << " "
-                  << h.pressure.value << " " << h.pressure.standardError << " "
+                  << h.bondOrder.value << " " << h.pressure.value << " " << h.pressure.standardError << " "
                   << r.temperature << " " << (h.steady ? "yes" : "no") << " \""
                   << h.regime << "\"\n";
             table.flush();
@@ -166,10 +166,10 @@ int main(int argc, char** argv)
             std::printf
             (
                 "cell %zu/%zu: I %.4g (target %g), mu %.4f +- %.4f, phi %.4f +- %.4f, Z %.2f,"
-                " %s, %s; %.0f s so far\n", k + 1, inertialNumbers.size(),
+                " Q6 %.3f, %s, %s; %.0f s so far\n", k + 1, inertialNumbers.size(),
                 h.inertialNumber.value, I, h.stressRatio.value, h.stressRatio.standardError,
                 h.solidsFraction.value, h.solidsFraction.standardError,
-                h.coordinationNumber.value, h.steady ? "steady" : "NOT steady",
+                h.coordinationNumber.value, h.bondOrder.value, h.steady ? "steady" : "NOT steady",
                 h.regime.c_str(), elapsed
             );
             std::fflush(stdout);

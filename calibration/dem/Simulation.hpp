@@ -192,6 +192,14 @@ public:
     struct ContactSummary { long contacts = 0; double meanOverlapFraction = 0; };
     ContactSummary contactSummary() const;
 
+    //- Steinhardt's global bond-orientational order Q6 of the touching pairs' directions
+    //  (Steinhardt, Nelson & Ronchetti 1983): sqrt(4 pi/13 sum_m |<Y_6m>|^2), the mean
+    //  over the bonds. 0.5745 for the contacts of a face-centred cubic packing, 0.4848
+    //  hexagonal close packed; a disordered packing of n bonds about 1/sqrt(n). A cell
+    //  that crystallises (one size at low friction) reads high: its mu and phi are an
+    //  ordered packing's, not the bulk's. 0 without contacts.
+    double bondOrderQ6() const;
+
     //- The pressure control (null: volume-controlled cell) and sigma_yy at its last
     //  update [Pa].
     const Barostat* barostat() const { return barostat_.get(); }

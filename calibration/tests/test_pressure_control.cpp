@@ -1,9 +1,11 @@
 // The pressure-controlled sheared cell (Barostat.hpp, RheologyMeasurement): the barostat's
 // law and its affine dilation exactly, a bitwise resume, the target held with the density
 // an output, the rheology's two signatures (rate strengthening of mu and dilatancy of phi
-// with I), the regimes at the extremes (jammed, gas), and the refusals. The comparison with
+// with I), the regimes at the extremes (jammed, gas, ordered: the bond order Q6 of
+// crystals against its known values), and the refusals. The comparison with
 // LAMMPS is benchmarks/rheologyVsLammps (docs/validation.md).
 #include "CellRun.hpp"
+#include "Measurements.hpp"
 #include "TestCells.hpp"
 
 #include <gtest/gtest.h>
@@ -50,7 +52,108 @@ CellRunSettings pressureControlledCell(double inertialNumber, int particles = 20
     return s;
 }
 
+//- Close-packed spheres of diameter 1 mm touching their 12 neighbours with an overlap of
+//  0.1 % of d, in a periodic box: face-centred cubic (n^3 cubic cells of 4) or hexagonal
+//  close packed (hexagonal layers A B A B along z, 2n rows of n in a layer, 2n layers)
+std::pair<Particles, PeriodicBox> closePacked(bool hexagonal, int n = 4)
+{
+    const double d = 1e-3, r = 0.5005*d, m = 2500*4.0/3.0*M_PI*r*r*r;
+    Particles p;
+    PeriodicBox box;
+    if (!hexagonal)
+    {
+        const double a = d*std::sqrt(2.0);
+        box.lx = box.ly = box.lz = n*a;
+        const double basis[4][3] = {{0, 0, 0}, {0.5, 0.5, 0}, {0.5, 0, 0.5}, {0, 0.5, 0.5}};
+        for (int i = 0; i < n; ++i)
+            for (int j = 0; j < n; ++j)
+                for (int k = 0; k < n; ++k)
+                    for (const auto& b : basis)
+                        p.add((i + b[0])*a, (j + b[1])*a, (k + b[2])*a, r, m, 0);
+    }
+    else
+    {
+        const double rowSpacing = d*std::sqrt(3.0)/2, layerSpacing = d*std::sqrt(2.0/3.0);
+        box.lx = n*d;
+        box.ly = 2*n*rowSpacing;
+        box.lz = 2*n*layerSpacing;
+        for (int layer = 0; layer < 2*n; ++layer)
+        {
+            // B layers over the A layers' triangle centres
+            const double sx = layer % 2 ? 0.5*d : 0, sy = layer % 2 ? rowSpacing/3 : 0;
+            for (int row = 0; row < 2*n; ++row)
+                for (int i = 0; i < n; ++i)
+                    p.add((i + 0.5*(row % 2))*d + sx, row*rowSpacing + sy,
+                          layer*layerSpacing, r, m, 0);
+        }
+    }
+    for (std::size_t i = 0; i < p.size(); ++i) p.id[i] = int(i);
+    return {p, box};
+}
+
 } // namespace
+
+// Q6 of the contacts against its values for the perfect crystals (Steinhardt, Nelson &
+// Ronchetti 1983: 0.57452 fcc, 0.48476 hcp), one bond in any direction (exactly 1: the
+// addition theorem, sum_m |Y_6m|^2 = 13/(4 pi), which every m's term enters), and a random
+// packing's near 0
+TEST(BondOrder, CrystalsAndDisorder)
+{
+    const auto species = test::mono();
+    for (const Eigen::Vector3d& direction :
+         {Eigen::Vector3d(0.3, -0.5, 0.8), Eigen::Vector3d(-0.9, 0.2, 0.1),
+          Eigen::Vector3d(0.1, 0.7, -0.2), Eigen::Vector3d(0, 0, 1)})
+    {
+        const double d = 1e-3, r = 0.5005*d, m = 2500*4.0/3.0*M_PI*r*r*r;
+        const Eigen::Vector3d n = direction.normalized(), c(5*d, 5*d, 5*d);
+        Particles pair;
+        pair.add(c.x(), c.y(), c.z(), r, m, 0);
+        pair.add(c.x() + d*n.x(), c.y() + d*n.y(), c.z() + d*n.z(), r, m, 0);
+        pair.id = {0, 1};
+        PeriodicBox box;
+        box.lx = box.ly = box.lz = 10*d;
+        Simulation sim(species, test::softContacts(0.7, 0.5), pair, box);
+        ASSERT_EQ(sim.contactSummary().contacts, 1);
+        EXPECT_NEAR(sim.bondOrderQ6(), 1.0, 1e-12) << direction.transpose();
+    }
+    for (const bool hexagonal : {false, true})
+    {
+        auto [particles, box] = closePacked(hexagonal);
+        Simulation sim(species, test::softContacts(0.7, 0.5), particles, box);
+        const Simulation::ContactSummary c = sim.contactSummary();
+        ASSERT_EQ(c.contacts, 6*long(sim.particles().size())) << "12 neighbours each";
+        EXPECT_NEAR(sim.bondOrderQ6(), hexagonal ? 0.48476 : 0.57452, 5e-5)
+            << (hexagonal ? "hcp" : "fcc");
+    }
+    const Packing random = test::packedCell(species, {300}, 0.6, 1e-6);
+    Simulation sim(species, test::softContacts(0.7, 0.5), random.particles, random.box);
+    ASSERT_GT(sim.contactSummary().contacts, 150);
+    std::cout << "random packing (phi 0.6, " << sim.contactSummary().contacts
+              << " contacts): Q6 " << sim.bondOrderQ6() << std::endl;
+    EXPECT_LT(sim.bondOrderQ6(), 0.1);
+}
+
+// A cell whose contacts are a crystal's is "ordered", not a dense flow (its mu and phi are
+// not the bulk's); nothing else about it is refused
+TEST(PressureControl, CrystallisedCellIsOrdered)
+{
+    auto [particles, box] = closePacked(false);
+    const auto species = test::mono();
+    Simulation sim(species, test::softContacts(0.7, 0.5), particles, box);
+    RheologyMeasurement m(8);
+    for (long k = 0; k < 16; ++k) m.sample(sim, k);
+    CellRunResult result;
+    result.settings = pressureControlledCell(0.05);
+    result.settings.species = species;
+    result.settings.volumeFractions = {1.0};
+    result.meanDiameter = 1e-3;
+    m.finish(result, 16);
+    const RheologyResult& r = result.rheology;
+    EXPECT_NEAR(r.bondOrder.value, 0.57452, 5e-5);
+    EXPECT_EQ(r.regime, "ordered") << r.regimeReason;
+    EXPECT_TRUE(contains(r.regimeReason, "crystallised")) << r.regimeReason;
+    EXPECT_FALSE(r.denseSteadyFlow());
+}
 
 TEST(PressureControl, BarostatLaw)
 {

@@ -262,7 +262,7 @@ struct SamplingProgress
 
 // 2: the collective-motion sums were added (a format-1 checkpoint lacks them); 3: the
 // stress series' block means (their products are correlated about them)
-const std::string checkpointFormat = "sdf_dem CellRun 3";
+const std::string checkpointFormat = "sdf_dem CellRun 4";
 
 void writeCellCheckpoint
 (

@@ -18,7 +18,9 @@
 #include "correlation/GreenKubo.hpp"
 #include "correlation/StressGreenKubo.hpp"
 
+#include <algorithm>
 #include <array>
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -139,18 +141,29 @@ struct RheologyResult
     correlation::Estimate solidsFraction;  // phi
     correlation::Estimate coordinationNumber;      // Z = 2 contacts/N
     correlation::Estimate meanOverlapFraction;     // <delta/(R_i + R_j)> over the contacts
+    correlation::Estimate bondOrder;       // Q6 of the contacts (Simulation::bondOrderQ6)
     //- Steady: the first and second halves of the blocks agree in phi and mu within 3
     //  combined standard errors or within 1e-3 (phi) and 5e-3 (mu); steadyCheck says by
     //  how much
     bool steady = false;
     std::string steadyCheck;
     //- "dense flow", "jammed" (I below minimumInertialNumber: quasi-static, no inertial
-    //  rheology to measure) or "gas" (I above maximumInertialNumber or Z below 1: outside
-    //  the dense regime); regimeReason: the figures that decided
+    //  rheology to measure), "gas" (I above maximumInertialNumber or Z below 1: outside
+    //  the dense regime) or "ordered" (Q6 above maximumBondOrder: crystallised);
+    //  regimeReason: the figures that decided
     std::string regime;
     std::string regimeReason;
     static constexpr double minimumInertialNumber = 1e-4;
     static constexpr double maximumInertialNumber = 1.0;
+    //- Q6 above which a cell of N grains with Z contacts each is ordered: 0.25, between a
+    //  disordered cell's (about 1/sqrt(bonds): 0.05-0.08 at 200 grains) and a crystal's
+    //  (0.48-0.57), and in a cell so small that disorder reads high, 4/sqrt(Z N/2)
+    //  (docs/validation.md, "Crystallised cells")
+    static double maximumBondOrder(double Z, int particles)
+    {
+        const double bonds = 0.5*Z*double(particles);
+        return bonds > 0 ? std::max(0.25, 4/std::sqrt(bonds)) : 0.25;
+    }
     bool denseSteadyFlow() const { return measured && steady && regime == "dense flow"; }
 };
 

@@ -67,7 +67,7 @@ void writeRheology(const io::Group& res, const RheologyResult& h)
         {"pressure", &h.pressure}, {"shearStress", &h.shearStress},
         {"stressRatio", &h.stressRatio}, {"inertialNumber", &h.inertialNumber},
         {"solidsFraction", &h.solidsFraction}, {"coordinationNumber", &h.coordinationNumber},
-        {"meanOverlapFraction", &h.meanOverlapFraction}
+        {"meanOverlapFraction", &h.meanOverlapFraction}, {"bondOrder", &h.bondOrder}
     };
     for (const auto& [name, e] : estimates)
     {

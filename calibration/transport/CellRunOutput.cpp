@@ -82,7 +82,7 @@ std::string summary(const CellRunResult& r)
             << ", I = " << pm(h.inertialNumber) << " (d " << h.meanDiameter << " m, rho_s "
             << h.solidsDensity << " kg/m3), phi = " << pm(h.solidsFraction) << ", Z = "
             << pm(h.coordinationNumber) << ", mean overlap " << 100*h.meanOverlapFraction.value
-            << " % of d\n";
+            << " % of d, bond order Q6 = " << pm(h.bondOrder) << "\n";
         out << "    steady: " << (h.steady ? "yes" : "NO") << " (" << h.steadyCheck
             << "); regime: " << h.regime << " (" << h.regimeReason << ")\n";
     }

@@ -171,6 +171,7 @@ void RheologyMeasurement::sample(const Simulation& x, long)
     phi_.push_back(x.solidsFraction());
     coordination_.push_back(2.0*double(contacts.contacts)/double(x.particles().size()));
     overlap_.push_back(contacts.meanOverlapFraction);
+    bondOrder_.push_back(x.bondOrderQ6());
 }
 
 void RheologyMeasurement::save(io::Checkpoint& c) const
@@ -180,6 +181,7 @@ void RheologyMeasurement::save(io::Checkpoint& c) const
     c.vectors["cellRun_rheologyPhi"] = phi_;
     c.vectors["cellRun_rheologyCoordination"] = coordination_;
     c.vectors["cellRun_rheologyOverlap"] = overlap_;
+    c.vectors["cellRun_rheologyBondOrder"] = bondOrder_;
 }
 
 void RheologyMeasurement::load(const io::Checkpoint& c, const std::string& f)
@@ -189,6 +191,7 @@ void RheologyMeasurement::load(const io::Checkpoint& c, const std::string& f)
     phi_ = entry(c.vectors, "cellRun_rheologyPhi", f);
     coordination_ = entry(c.vectors, "cellRun_rheologyCoordination", f);
     overlap_ = entry(c.vectors, "cellRun_rheologyOverlap", f);
+    bondOrder_ = entry(c.vectors, "cellRun_rheologyBondOrder", f);
 }
 
 void RheologyMeasurement::finish(CellRunResult& result, long) const
@@ -203,7 +206,7 @@ void RheologyMeasurement::finish(CellRunResult& result, long) const
     const double gammaDot = std::abs(settings.simulation.shearRate);
 
     // per block: the means, and mu and I from them (ratios of means, not means of ratios)
-    struct Block { double p, tau, mu, I, phi, Z, overlap; };
+    struct Block { double p, tau, mu, I, phi, Z, overlap, Q6; };
     const auto mean = [](const std::vector<double>& v, std::size_t b, std::size_t e)
     {
         double sum = 0;
@@ -223,6 +226,7 @@ void RheologyMeasurement::finish(CellRunResult& result, long) const
             k.phi = mean(phi_, b, e);
             k.Z = mean(coordination_, b, e);
             k.overlap = mean(overlap_, b, e);
+            k.Q6 = mean(bondOrder_, b, e);
             return k;
         }
     );
@@ -242,6 +246,7 @@ void RheologyMeasurement::finish(CellRunResult& result, long) const
     r.solidsFraction = estimate(&Block::phi, 0, nb);
     r.coordinationNumber = estimate(&Block::Z, 0, nb);
     r.meanOverlapFraction = estimate(&Block::overlap, 0, nb);
+    r.bondOrder = estimate(&Block::Q6, 0, nb);
 
     // steady: the halves of the sampling agree (a drift of phi or mu shows as a difference)
     std::ostringstream check;
@@ -287,10 +292,21 @@ void RheologyMeasurement::finish(CellRunResult& result, long) const
         why << "I = " << I << ", Z = " << Z << ": outside the dense regime (I <= "
             << RheologyResult::maximumInertialNumber << " and Z >= 1)";
     }
+    else if (r.bondOrder.value > RheologyResult::maximumBondOrder(Z, result.settings.particles))
+    {
+        // one size at low friction orders into layers that slide over each other: a
+        // steady flow, but of a crystal, whose mu and phi are not the bulk's
+        r.regime = "ordered";
+        why << "bond order Q6 = " << r.bondOrder.value << " > "
+            << RheologyResult::maximumBondOrder(Z, result.settings.particles) << " (phi "
+            << r.solidsFraction.value
+            << "): the grains crystallised into ordered layers, not a disordered bulk's"
+            << " rheology (a size spread or more friction keeps a packing disordered)";
+    }
     else
     {
         r.regime = "dense flow";
-        why << "I = " << I << ", Z = " << Z;
+        why << "I = " << I << ", Z = " << Z << ", Q6 = " << r.bondOrder.value;
     }
     r.regimeReason = why.str();
 }

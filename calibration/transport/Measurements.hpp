@@ -37,7 +37,7 @@ private:
 };
 
 //- The rheology of a sheared cell (RheologyResult): per sample sigma_yy, sigma_xy, the
-//  solids fraction, the contacts and their mean overlap.
+//  solids fraction, the contacts, their mean overlap and their bond order Q6.
 class RheologyMeasurement : public Measurement
 {
 public:
@@ -49,8 +49,8 @@ public:
 
 private:
     int blocks_;
-    // per sample: sigma_yy, sigma_xy [Pa], phi, Z, mean overlap fraction
-    std::vector<double> normal_, shear_, phi_, coordination_, overlap_;
+    // per sample: sigma_yy, sigma_xy [Pa], phi, Z, mean overlap fraction, Q6
+    std::vector<double> normal_, shear_, phi_, coordination_, overlap_, bondOrder_;
 };
 
 //- Samples between the MSD's position frames (at most maxFrames per run), its longest

@@ -135,12 +135,12 @@ label cellCount
     std::initializer_list<const CellValues*> fields
 )
 {
-    label n = 1;
+    label n = -1;
     for (const CellValues* f : fields)
     {
         if (!f->uniform)
         {
-            if (n > 1 && f->values.size() != n)
+            if (n >= 0 && f->values.size() != n)
             {
                 FatalErrorInFunction
                     << "-fromCase: the fields in " << dir << " have"
@@ -150,7 +150,7 @@ label cellCount
             n = f->values.size();
         }
     }
-    return n;
+    return n < 0 ? 1 : n;
 }
 
 
@@ -194,8 +194,9 @@ bool mechanismOn(const dictionary& properties, const word& mechanism)
 //  material (phi >= phiMin) and shear (gammaDot >= minRatio times its
 //  largest, when the case wrote gammaDot: the flowing zones, where mu(I)
 //  decides the flow). The median, not the largest: mu(I) of stiff grains
-//  does not depend on p (the cells report k_n/(p d)), and the median is
-//  where most of the flowing bulk is.
+//  does not depend on p (the cells report k_n/(p d)). A median over cells,
+//  not volume (the fields are read without the mesh): on a graded mesh it
+//  leans to the finer cells.
 scalar rheologyPressureOfCase
 (
     const std::vector<fileName>& sources,
@@ -226,14 +227,6 @@ scalar rheologyPressureOfCase
             << " with 'bulkFlow { model muI; }' to time " << time
             << ", or give 'pressure' [Pa] in the rheology entry of "
             << settings.dict().name() << nl << exit(FatalError);
-    }
-    if (!(minRatio > 0 && minRatio <= 1))
-    {
-        FatalIOErrorInFunction(settings.dict())
-            << "Entry 'fromCase/minGammaDotRatio' " << minRatio
-            << " is outside (0, 1]: the cells whose pressure sets the"
-            << " rheology's, by their shear rate as a fraction of the largest"
-            << nl << exit(FatalIOError);
     }
     const bool haveShear = isFile(sources[0]/"gammaDot");
 
@@ -273,13 +266,19 @@ scalar rheologyPressureOfCase
     if (pressures.empty())
     {
         FatalErrorInFunction
-            << "-fromCase rheology: no cell at time " << time << " holds"
-            << " material and shears (gammaDot zero in every cell holding"
-            << " material): give 'pressure' [Pa] in the rheology entry of "
+            << "-fromCase rheology: no cell at time " << time << " "
+            << (
+                   cells.empty()
+                 ? "holds material (n." + fine + " + n." + coarse + " >= phiMin)"
+                 : std::string("shears (gammaDot zero in every cell holding material)")
+               ).c_str()
+            << ": give 'pressure' [Pa] in the rheology entry of "
             << settings.dict().name() << nl << exit(FatalError);
     }
     std::sort(pressures.begin(), pressures.end());
-    const scalar median = pressures[pressures.size()/2];
+    // rounded as the envelope's values are, so that a case rerun a little
+    // differently reuses the stored rheology cells (their key holds p)
+    const scalar median = roundSignificant(pressures[pressures.size()/2]);
     if (!(median > 0))
     {
         FatalErrorInFunction
@@ -471,10 +470,22 @@ Foam::caseEnvelope Foam::deriveEnvelope
 
     if (rheology)
     {
+        // the cells whose pressure sets the rheology's: those that shear
+        const scalar shearRatio =
+            settings.sheared()
+          ? minRatio
+          : opts.getOrDefault<scalar>("minGammaDotRatio", 1e-3);
+        if (!(shearRatio > 0 && shearRatio <= 1))
+        {
+            FatalIOErrorInFunction(opts)
+                << "Entry 'fromCase/minGammaDotRatio' " << shearRatio
+                << " is outside (0, 1]: the cells whose pressure sets the"
+                << " rheology's, by their shear rate as a fraction of the"
+                << " largest" << nl << exit(FatalIOError);
+        }
         env.rheologyPressure = rheologyPressureOfCase
         (
-            sources, time, runTime, settings, phiMin,
-            opts.getOrDefault<scalar>("minGammaDotRatio", 1e-3)
+            sources, time, runTime, settings, phiMin, shearRatio
         );
     }
     if (env.coefficients.empty())

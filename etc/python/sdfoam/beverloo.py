@@ -48,6 +48,7 @@ def readRuns(work):
         if line.strip():
             name, *opts = line.split()
             if not os.path.isdir(os.path.join(work, name, "postProcessing", "outletComposition")):
+                print("readRuns: %s has no outlet record (not run, or failed): left out" % name)
                 continue
             o = dict(zip(opts[::2], opts[1::2]))
             runs.append((name, {k.lstrip("-"): float(v) for k, v in o.items()}))
