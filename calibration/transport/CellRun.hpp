@@ -156,8 +156,9 @@ struct RheologyResult
     static constexpr double minimumInertialNumber = 1e-4;
     static constexpr double maximumInertialNumber = 1.0;
     //- Q6 above which a cell of N grains with Z contacts each is ordered: 0.25, between a
-    //  disordered cell's (about 1/sqrt(bonds): 0.05-0.08 at 200 grains) and a crystal's
-    //  (0.48-0.57), and in a cell so small that disorder reads high, 4/sqrt(Z N/2)
+    //  disordered cell's (about 1/sqrt(bonds): 0.05-0.09 at 200 grains) and a crystallised
+    //  one's (0.26-0.38; a perfect crystal 0.48-0.57), and in a cell so small that
+    //  disorder reads high, 4/sqrt(Z N/2)
     //  (docs/validation.md, "Crystallised cells")
     static double maximumBondOrder(double Z, int particles)
     {
