@@ -21,8 +21,9 @@ packed fraction and d) rho_b = PACKED x 2500 kg/m3 and d = D instead.
 Mesh convergence: for each slot run on 5, 2.5 and 1.25 mm cells (coarse_,
 fit_, fine_), the rates over the common window [0.2 s, 0.4 s] (the rate is
 steady from 0.1 s; the fine runs end at 0.4 s), the observed order and the
-Richardson estimate; the same fits over the estimates (the converged
-rates) when every fit slot has one, and over the 1.25 mm rates.
+Richardson estimate; a slot on 2.5 and 1.25 mm cells only is extrapolated
+at the mean of those orders; the same fits over the estimates (the
+converged rates) when every fit slot has one, and over the 1.25 mm rates.
 """
 import math
 import os
@@ -84,15 +85,20 @@ with open(results, "w") as out:
     out.write("# with n = 3/2, k = 1.5: C %.4f (slot law C = 1.03, Nedderman after Myers & Sellers)\n" % C32)
     # mesh convergence: each slot on 5, 2.5 and 1.25 mm cells over the
     # common window, the observed order and the Richardson estimate
+    # (slots with two meshes only: the estimate at the mean order of the others)
     converged, finest, convergence = [], [], []
+    windowRate = lambda run: timeMean([(t, x) for t, x, _ in series[run]], *convergenceWindow)
+    twoMeshes = []
     for name, (o, _, _) in rates.items():
         if not name.startswith("fit"):
             continue
         tag = name[len("fit"):]
-        if "coarse" + tag not in rates or "fine" + tag not in rates:
+        if "fine" + tag not in rates:
             continue
-        w = [timeMean([(t, x) for t, x, _ in series[level + tag]], *convergenceWindow)
-             for level in ("coarse", "fit", "fine")]
+        if "coarse" + tag not in rates:
+            twoMeshes.append((o, [float("nan"), windowRate(name), windowRate("fine" + tag)]))
+            continue
+        w = [windowRate(level + tag) for level in ("coarse", "fit", "fine")]
         p, estimate = richardson(*w)
         if not convergence:
             out.write("# mesh convergence over t = %.1f-%.1f s: W on 5, 2.5, 1.25 mm cells, observed order,"
@@ -103,13 +109,29 @@ with open(results, "w") as out:
         if math.isfinite(estimate):
             converged.append((o["b"], estimate))
         convergence.append((o["b"], w, estimate))
+    orders = [math.log((w[0] - w[1]) / (w[1] - w[2])) / math.log(2)
+              for _, w, e in convergence if math.isfinite(e)]
+    if twoMeshes and orders:
+        p = sum(orders) / len(orders)
+        for o, w in twoMeshes:
+            estimate = w[2] + (w[2] - w[1]) / (2 ** p - 1)
+            out.write("#   b %4.1f mm: (no 5 mm mesh) %.4f %.4f  at the mean order %.2f  W_h->0 %.4f  %.4f\n"
+                      % (o["b"] * 1e3, w[1], w[2], p, estimate, w[2] / estimate))
+            finest.append((o["b"], w[2]))
+            converged.append((o["b"], estimate))
+            convergence.append((o["b"], w, estimate))
+        finest.sort()
+        converged.sort()
     for label, points in (("1.25 mm cells (t = %.1f-%.1f s)" % convergenceWindow, finest),
                           ("the Richardson estimates", converged)):
         if len(points) == len(fit) and len(points) >= 3:
             nR, CR, kR, resR = fitBeverloo(points, d, prefactor, [k / 100.0 for k in range(0, 601)])
             C32R = sum(W / (prefactor * (b - 1.5 * d) ** 1.5) for b, W in points) / len(points)
-            out.write("# Beverloo fit over %s: n %.3f, C %.4f, k %.2f (residual %.2e);"
-                      " with n = 3/2, k = 1.5: C %.4f\n" % (label, nR, CR, kR, resR, C32R))
+            C32k0 = sum(W / (prefactor * b ** 1.5) for b, W in points) / len(points)
+            out.write("# Beverloo fit over %s: n %.3f, C %.4f, k %.2f%s (residual %.2e);"
+                      " with n = 3/2, k = 1.5: C %.4f; with n = 3/2, k = 0: C %.4f\n"
+                      % (label, nR, CR, kR, " (the grid's lower end: no empty annulus)" if kR == 0 else "",
+                         resR, C32R, C32k0))
         elif points:
             out.write("# no Beverloo fit over %s: %d of %d slots\n" % (label, len(points), len(fit)))
     # the ratios of the runs that ran (run -only leaves some out)
@@ -127,7 +149,8 @@ with open(results, "w") as out:
             if math.isfinite(estimate):
                 f.write("b=%.0fmm -\n" % (b * 1e3))
                 for dx, rate in zip((5.0, 2.5, 1.25), w):
-                    f.write("%.3f %.5f\n" % (dx, rate / estimate))
+                    if math.isfinite(rate):
+                        f.write("%.3f %.5f\n" % (dx, rate / estimate))
                 f.write("\n\n")
     with open(os.path.join(work, "fit.dat"), "w") as f:
         f.write("# b[m] W[kg/s/m] fit(n,C,k) slotLaw(1.03, k 1.5, n 1.5)\n")
