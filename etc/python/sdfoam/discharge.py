@@ -1,10 +1,24 @@
 """What leaves a bin, binned: the fines' share of each 5 % of the fill and
 the discharge rate (benchmarks/siloFillDEM: its DEM peer's analyse and the
-continuum's compare measure both the same way).
+continuum's compare measure both the same way); and the peer's settled
+grains (its fill.dump), which analyse, compare and surface read.
 
 outs: (time, cumulative fines out, cumulative coarse out) in time order, in
 any unit of amount (volume, mass per depth); total: the fill in that unit.
 """
+
+
+def settledGrains(path):
+    """[(x, z, diameter)] of the grains in a LAMMPS dump of columns id x z
+    diameter (benchmarks/siloFillDEM/in.siloFill's fill.dump)."""
+    with open(path) as f:
+        lines = f.read().splitlines()
+    start = next(i for i, l in enumerate(lines) if l.startswith("ITEM: ATOMS")) + 1
+    grains = []
+    for l in lines[start:]:
+        _, x, z, dia = l.split()
+        grains.append((float(x), float(z), float(dia)))
+    return grains
 
 
 def shareBins(outs, total, nBins=20):
