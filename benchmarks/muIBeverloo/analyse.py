@@ -30,7 +30,7 @@ import os
 import sys
 
 from sdfoam.beverloo import (fit as fitBeverloo, fitFixedK, measure, outletSeries, readRuns,
-                             richardson, timeMean, writeRateFile)
+                             extrapolate, richardson, timeMean, writeRateFile)
 
 work, results = sys.argv[1], sys.argv[2]
 packed = float(sys.argv[3]) if len(sys.argv) > 3 else 0.6
@@ -56,20 +56,15 @@ with open(results, "w") as out:
             out.write("# %s: not finished (t = %.3f s of %g)\n" % (name, series[name][-1][0], o["endTime"]))
             del series[name]
             continue
-        if name.startswith("fine"):
-            # the fine runs end at 0.4 s: their rate over the common window
-            tEnd, W, dev, frac = measure(series[name], fill, convergenceWindow[0], window)
-            rates[name] = (o, W, dev)
-            out.write("%-11s %5.1f %4.2f %5.2f %9.4f %4.2f-%4.2f %.2e %.3f\n"
-                      % (name, o["b"] * 1e3, o["dx"] * 1e3, o["hFill"], W, convergenceWindow[0], tEnd,
-                         dev, frac))
-            writeRateFile(os.path.join(work, name + ".rate"), series[name], fill, "W[kg/s/m]")
-            continue
-        tEnd, W, dev, frac = measure(series[name], fill, tStart, window,
+        # the fine runs end at 0.4 s: their rate over the common window
+        fine = name.startswith("fine")
+        t0 = convergenceWindow[0] if fine else tStart
+        tEnd, W, dev, frac = measure(series[name], fill, t0, window,
                                      0.6 if name.startswith("empty") else None)
         rates[name] = (o, W, dev)
-        out.write("%-11s %5.1f %4.1f %5.2f %9.4f %4.2f-%4.2f %.2e %.3f\n"
-                  % (name, o["b"] * 1e3, o["dx"] * 1e3, o["hFill"], W, tStart, tEnd, dev, frac))
+        out.write("%-11s %5.1f %4s %5.2f %9.4f %4.2f-%4.2f %.2e %.3f\n"
+                  % (name, o["b"] * 1e3, ("%.2f" if fine else "%.1f") % (o["dx"] * 1e3), o["hFill"], W,
+                     t0, tEnd, dev, frac))
         writeRateFile(os.path.join(work, name + ".rate"), series[name], fill, "W[kg/s/m]")
 
     fit = [(o["b"], W) for name, (o, W, _) in rates.items() if name.startswith("fit")]
@@ -86,7 +81,7 @@ with open(results, "w") as out:
     # mesh convergence: each slot on 5, 2.5 and 1.25 mm cells over the
     # common window, the observed order and the Richardson estimate
     # (slots with two meshes only: the estimate at the mean order of the others)
-    converged, finest, convergence = [], [], []
+    converged, finest, convergence, orders = [], [], [], []
     windowRate = lambda run: timeMean([(t, x) for t, x, _ in series[run]], *convergenceWindow)
     twoMeshes = []
     for name, (o, _, _) in rates.items():
@@ -108,13 +103,12 @@ with open(results, "w") as out:
         finest.append((o["b"], w[2]))
         if math.isfinite(estimate):
             converged.append((o["b"], estimate))
+            orders.append(p)
         convergence.append((o["b"], w, estimate))
-    orders = [math.log((w[0] - w[1]) / (w[1] - w[2])) / math.log(2)
-              for _, w, e in convergence if math.isfinite(e)]
     if twoMeshes and orders:
         p = sum(orders) / len(orders)
         for o, w in twoMeshes:
-            estimate = w[2] + (w[2] - w[1]) / (2 ** p - 1)
+            estimate = extrapolate(w[1], w[2], p)
             out.write("#   b %4.1f mm: (no 5 mm mesh) %.4f %.4f  at the mean order %.2f  W_h->0 %.4f  %.4f\n"
                       % (o["b"] * 1e3, w[1], w[2], p, estimate, w[2] / estimate))
             finest.append((o["b"], w[2]))

@@ -145,12 +145,18 @@ def fitFixedK(points, d, prefactor, k):
 def richardson(coarse, medium, fine, ratio=2.0):
     """(observed order, Richardson estimate) of a quantity on three meshes
     refined by ratio: p = ln((coarse - medium)/(medium - fine))/ln(ratio),
-    the estimate fine + (fine - medium)/(ratio^p - 1); (nan, nan) when the
-    three do not converge monotonically (the differences change sign or
-    do not shrink)."""
+    the estimate extrapolate(medium, fine, p); (nan, nan) when the three do
+    not converge monotonically (the differences change sign or do not
+    shrink)."""
     d1, d2 = coarse - medium, medium - fine
     if d1 == 0 or d2 == 0 or d1 * d2 < 0 or abs(d2) >= abs(d1):
         return float("nan"), float("nan")
     p = math.log(d1 / d2) / math.log(ratio)
-    return p, fine + (fine - medium) / (ratio ** p - 1)
+    return p, extrapolate(medium, fine, p, ratio)
+
+
+def extrapolate(medium, fine, order, ratio=2.0):
+    """Richardson's estimate from two meshes refined by ratio at a known
+    order: fine + (fine - medium)/(ratio^order - 1)."""
+    return fine + (fine - medium) / (ratio ** order - 1)
 
