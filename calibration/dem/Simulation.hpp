@@ -187,18 +187,21 @@ public:
     //- Solids volume over the box's volume.
     double solidsFraction() const;
 
-    //- The touching pairs now: their number and mean overlap over the pair's mean
-    //  diameter (the coordination number is 2 contacts / N).
-    struct ContactSummary { long contacts = 0; double meanOverlapFraction = 0; };
-    ContactSummary contactSummary() const;
-
-    //- Steinhardt's global bond-orientational order Q6 of the touching pairs' directions
+    //- The touching pairs now, in one pass over them: their number (the coordination
+    //  number is 2 contacts / N), mean overlap over the pair's mean diameter, and
+    //  bondOrderQ6, Steinhardt's global bond-orientational order Q6 of their directions
     //  (Steinhardt, Nelson & Ronchetti 1983): sqrt(4 pi/13 sum_m |<Y_6m>|^2), the mean
     //  over the bonds. 0.5745 for the contacts of a face-centred cubic packing, 0.4848
     //  hexagonal close packed; a disordered packing of n bonds about 1/sqrt(n). A cell
     //  that crystallises (one size at low friction) reads high: its mu and phi are an
     //  ordered packing's, not the bulk's. 0 without contacts.
-    double bondOrderQ6() const;
+    struct ContactSummary
+    {
+        long contacts = 0;
+        double meanOverlapFraction = 0;
+        double bondOrderQ6 = 0;
+    };
+    ContactSummary contactSummary() const;
 
     //- The pressure control (null: volume-controlled cell) and sigma_yy at its last
     //  update [Pa].

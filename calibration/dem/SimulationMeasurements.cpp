@@ -30,6 +30,53 @@ double kineticEnergy
     return e;
 }
 
+//- The sums over bond directions n of Steinhardt's Y_6m(n), m = 0..6 (|<Y_6,-m>| =
+//  |<Y_6m>|): Y_6m(n) = K_m (x + i y)^m d^m P_6/dz^m (z) for the unit bond n = (x, y, z),
+//  up to a sign, with K_m^2 = 13/(4 pi) (6 - m)!/(6 + m)!
+struct BondOrderSum
+{
+    std::complex<double> sum[7] = {};
+
+    void add(const Eigen::Vector3d& n)
+    {
+        const double z = n.z(), z2 = z*z;
+        // the derivatives of P_6 = (231 z^6 - 315 z^4 + 105 z^2 - 5)/16
+        const double dP[7] =
+        {
+            ((231*z2 - 315)*z2 + 105)*z2 - 5,
+            ((1386*z2 - 1260)*z2 + 210)*z,
+            (6930*z2 - 3780)*z2 + 210,
+            (27720*z2 - 7560)*z,
+            83160*z2 - 7560,
+            166320*z,
+            166320
+        };
+        const std::complex<double> w(n.x(), n.y());
+        std::complex<double> wm(1, 0);
+        for (int m = 0; m <= 6; ++m)
+        {
+            sum[m] += wm*(dP[m]/16);
+            wm *= w;
+        }
+    }
+
+    //- Q6 = sqrt(4 pi/13 sum_m |<Y_6m>|^2) over `bonds` added bonds
+    double q6(long bonds) const
+    {
+        constexpr double factorialRatio[7] =   // (6 - m)!/(6 + m)!
+        {
+            1.0, 1.0/42, 1.0/1680, 1.0/60480, 1.0/1814400, 1.0/39916800, 1.0/479001600
+        };
+        double q = 0;
+        for (int m = 0; m <= 6; ++m)
+        {
+            const double K2 = 13/(4*M_PI)*factorialRatio[m];
+            q += (m == 0 ? 1 : 2)*K2*std::norm(sum[m]);
+        }
+        return std::sqrt(4*M_PI/13*q)/double(bonds);
+    }
+};
+
 } // namespace
 
 Eigen::Vector3d Simulation::meanVelocity() const
@@ -199,55 +246,6 @@ Eigen::Matrix3d Simulation::totalStress() const
     return J;
 }
 
-double Simulation::bondOrderQ6() const
-{
-    // Y_6m(n) = K_m (x + i y)^m d^m P_6/dz^m (z) for the unit bond n = (x, y, z), up to a
-    // sign; K_m^2 = 13/(4 pi) (6 - m)!/(6 + m)!. |<Y_6,-m>| = |<Y_6m>|, so m = 0..6.
-    constexpr double factorialRatio[7] =   // (6 - m)!/(6 + m)!
-    {
-        1.0, 1.0/42, 1.0/1680, 1.0/60480, 1.0/1814400, 1.0/39916800, 1.0/479001600
-    };
-    std::complex<double> sum[7] = {};
-    long bonds = 0;
-    forEachContact
-    (
-        [&](std::size_t, int i, int j, const Eigen::Vector3d& r)
-        {
-            const double distance = r.norm();
-            if (particles_.radius[i] + particles_.radius[j] - distance <= 0) return;
-            const Eigen::Vector3d n = r/distance;
-            const double z = n.z(), z2 = z*z;
-            // the derivatives of P_6 = (231 z^6 - 315 z^4 + 105 z^2 - 5)/16
-            const double dP[7] =
-            {
-                ((231*z2 - 315)*z2 + 105)*z2 - 5,
-                ((1386*z2 - 1260)*z2 + 210)*z,
-                (6930*z2 - 3780)*z2 + 210,
-                (27720*z2 - 7560)*z,
-                83160*z2 - 7560,
-                166320*z,
-                166320
-            };
-            const std::complex<double> w(n.x(), n.y());
-            std::complex<double> wm(1, 0);
-            for (int m = 0; m <= 6; ++m)
-            {
-                sum[m] += wm*(dP[m]/16);
-                wm *= w;
-            }
-            ++bonds;
-        }
-    );
-    if (bonds == 0) return 0;
-    double q = 0;
-    for (int m = 0; m <= 6; ++m)
-    {
-        const double K2 = 13/(4*M_PI)*factorialRatio[m];
-        q += (m == 0 ? 1 : 2)*K2*std::norm(sum[m]);
-    }
-    return std::sqrt(4*M_PI/13*q)/double(bonds);
-}
-
 double Simulation::solidsFraction() const
 {
     double volume = 0;
@@ -260,18 +258,25 @@ Simulation::ContactSummary Simulation::contactSummary() const
     const Particles& p = particles_;
     ContactSummary summary;
     double overlapSum = 0;
+    BondOrderSum order;
     forEachContact
     (
         [&](std::size_t, int i, int j, const Eigen::Vector3d& r)
         {
             const double contact = p.radius[i] + p.radius[j];
-            const double delta = contact - r.norm();
+            const double distance = r.norm();
+            const double delta = contact - distance;
             if (delta <= 0) return;
             ++summary.contacts;
             overlapSum += delta/contact;
+            order.add(r/distance);
         }
     );
-    if (summary.contacts > 0) summary.meanOverlapFraction = overlapSum/summary.contacts;
+    if (summary.contacts > 0)
+    {
+        summary.meanOverlapFraction = overlapSum/summary.contacts;
+        summary.bondOrderQ6 = order.q6(summary.contacts);
+    }
     return summary;
 }
 

@@ -141,7 +141,7 @@ struct RheologyResult
     correlation::Estimate solidsFraction;  // phi
     correlation::Estimate coordinationNumber;      // Z = 2 contacts/N
     correlation::Estimate meanOverlapFraction;     // <delta/(R_i + R_j)> over the contacts
-    correlation::Estimate bondOrder;       // Q6 of the contacts (Simulation::bondOrderQ6)
+    correlation::Estimate bondOrder;       // Q6 of the contacts (Simulation::ContactSummary)
     //- Steady: the first and second halves of the blocks agree in phi and mu within 3
     //  combined standard errors or within 1e-3 (phi) and 5e-3 (mu); steadyCheck says by
     //  how much

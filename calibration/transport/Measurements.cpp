@@ -171,7 +171,7 @@ void RheologyMeasurement::sample(const Simulation& x, long)
     phi_.push_back(x.solidsFraction());
     coordination_.push_back(2.0*double(contacts.contacts)/double(x.particles().size()));
     overlap_.push_back(contacts.meanOverlapFraction);
-    bondOrder_.push_back(x.bondOrderQ6());
+    bondOrder_.push_back(contacts.bondOrderQ6);
 }
 
 void RheologyMeasurement::save(io::Checkpoint& c) const
@@ -271,6 +271,7 @@ void RheologyMeasurement::finish(CellRunResult& result, long) const
     r.steadyCheck = check.str();
 
     const double I = r.inertialNumber.value, Z = r.coordinationNumber.value;
+    const double maxBondOrder = RheologyResult::maximumBondOrder(Z, result.settings.particles);
     std::ostringstream why;
     if (tensileBlocks > 0)
     {
@@ -292,13 +293,12 @@ void RheologyMeasurement::finish(CellRunResult& result, long) const
         why << "I = " << I << ", Z = " << Z << ": outside the dense regime (I <= "
             << RheologyResult::maximumInertialNumber << " and Z >= 1)";
     }
-    else if (r.bondOrder.value > RheologyResult::maximumBondOrder(Z, result.settings.particles))
+    else if (r.bondOrder.value > maxBondOrder)
     {
         // one size at low friction orders into layers that slide over each other: a
         // steady flow, but of a crystal, whose mu and phi are not the bulk's
         r.regime = "ordered";
-        why << "bond order Q6 = " << r.bondOrder.value << " > "
-            << RheologyResult::maximumBondOrder(Z, result.settings.particles) << " (phi "
+        why << "bond order Q6 = " << r.bondOrder.value << " > " << maxBondOrder << " (phi "
             << r.solidsFraction.value
             << "): the grains crystallised into ordered layers, not a disordered bulk's"
             << " rheology (a size spread or more friction keeps a packing disordered)";
