@@ -104,6 +104,36 @@ test_planar_silo_fill()
     python3 -m sdfoam.fieldStats "$case" bounds --tol 1e-8 --packed 0.6
 }
 
+# A pour deposited where it lands (Allrun -deposition: the same feed, 1 s,
+# glass beads, 10 mm cells): the check's balance (species 1e-8, solids
+# 1e-10 of the fill; what was deposited against the pour to 1e-3, a step's
+# worth), bounds; and a heap where the jet digs a crater: the highest
+# column under the inlet, every column outward no higher than the one
+# inside it (1 mm), the centre more than two cells above the walls
+test_planar_silo_fill_deposition()
+{
+    local case
+    case=$(fresh_validation_case planarSiloFillDeposition planarSiloFill) || return 1
+    "$case/Allrun" -deposition -fill 1 > "$case/../log.Allrun" 2>&1 \
+        || { tail -20 "$case/../log.Allrun"; return 1; }
+    grep "balance\|entered - fed\|slope beside" "$case/../log.Allrun"
+    python3 - "$case/results/fill.dat" <<'PY'
+import sys
+rows = [list(map(float, l.split())) for l in open(sys.argv[1]) if not l.startswith("#")]
+h = [r[1] for r in rows]
+n = len(h)
+half = h[n // 2:]            # from the centre line out to the right wall
+left = h[:n // 2][::-1]      # and to the left
+print("surface heights from the centre out [m]:", " ".join("%.4f" % v for v in half))
+ok = max(h) in (h[n // 2 - 1], h[n // 2])
+for side in (half, left):
+    ok = ok and all(b <= a + 1e-3 for a, b in zip(side, side[1:]))
+    ok = ok and side[0] - side[-1] > 0.02
+print("a heap with its apex under the inlet" if ok else "FAIL: not a heap under the inlet")
+sys.exit(0 if ok else 1)
+PY
+}
+
 # The bounded heap's limits (Fan et al. 2014; Schlick et al. 2015), half
 # fines and half coarse fed: with a segregation far stronger than the
 # diffusion (the shear-rate closures, C_s 26 for 0.26) the deposit that rose
@@ -539,7 +569,10 @@ mui_expect_refusal()
 # muI's bad input: mu_s >= mu_d, a negative I_0, a negative d, an unknown
 # forces, etaMax, pMin, rhoAir, muAir not > 0, packedFraction above 1, a
 # negative settlingVelocity, Beverloo's k not > 0, emptyAnnulus without
-# outletPatches, an unknown or out-of-range wall condition, the open top's alphaMin outside
+# outletPatches, a deposition (a pour deposited where it lands) with a rate
+# or radius not > 0, an unknown entry, a composition that names an unknown
+# species, leaves one out or does not sum to 1, an end not after its start or
+# a spout over no cell, an unknown or out-of-range wall condition, the open top's alphaMin outside
 # (0, 1), species whose sum is not
 # packedFraction alpha.granular, a species ddt scheme other than Euler, a
 # div(phi,n) with explicit correction: each a fatal error naming the entry
@@ -547,7 +580,15 @@ mui_expect_refusal()
 test_mui_bad_input()
 {
     local dir="$workRoot/muIBadInput" case="$workRoot/muIBadInput/inclinedPlaneMuI" entry value expect
-    for entry in "mu_s 0.7:'mu_d 0.643' must be > mu_s" "I_0 -0.1:'I_0 -0.1' must be > 0" "d -1e-3:'d -0.001' must be > 0" "forces cellCentred:Unknown 'forces cellCentred'; valid: (faceFlux cellGradient)" "etaMax -1:'etaMax -1' must be > 0" "pMin 0:'pMin 0' must be > 0" "rhoAir -1.2:'rhoAir -1.2' must be > 0" "muAir 0:'muAir 0' must be > 0" "packedFraction 1.2:'packedFraction 1.2' must lie in (0, 1]" "settlingVelocity -1:'settlingVelocity -1' must be >= 0" "k 0:'k 0' must be > 0" "emptyAnnulus yes:'emptyAnnulus yes' needs 'outletPatches'"
+    for entry in "mu_s 0.7:'mu_d 0.643' must be > mu_s" "I_0 -0.1:'I_0 -0.1' must be > 0" "d -1e-3:'d -0.001' must be > 0" "forces cellCentred:Unknown 'forces cellCentred'; valid: (faceFlux cellGradient)" "etaMax -1:'etaMax -1' must be > 0" "pMin 0:'pMin 0' must be > 0" "rhoAir -1.2:'rhoAir -1.2' must be > 0" "muAir 0:'muAir 0' must be > 0" "packedFraction 1.2:'packedFraction 1.2' must lie in (0, 1]" "settlingVelocity -1:'settlingVelocity -1' must be >= 0" "k 0:'k 0' must be > 0" "emptyAnnulus yes:'emptyAnnulus yes' needs 'outletPatches'" \
+        "deposition { rate 0; centre (0 0 0); radius 1e3; composition { grain 1; } }:'rate 0' must be > 0" \
+        "deposition { rate 1e-4; centre (0 0 0); radius -1; composition { grain 1; } }:'radius -1' must be > 0" \
+        "deposition { rate 1e-4; centre (0 0 0); radius 1e3; composition { grain 1; } speed 2; }:Unknown entry 'speed'" \
+        "deposition { rate 1e-4; centre (0 0 0); radius 1e3; composition { sand 1; } }:Unknown entry 'sand'" \
+        "deposition { rate 1e-4; centre (0 0 0); radius 1e3; composition { } }:No entry for species 'grain'" \
+        "deposition { rate 1e-4; centre (0 0 0); radius 1e3; composition { grain 0.5; } }:sum to 0.5, not 1" \
+        "deposition { rate 1e-4; centre (0 0 0); radius 1e3; composition { grain 1; } start 1; end 1; }:'end 1' must be after 'start 1'" \
+        "deposition { rate 1e-4; centre (1e3 1e3 0); radius 1e-6; composition { grain 1; } }:No cell centre lies within 'radius 1e-06'"
     do
         value="${entry%%:*}"; expect="${entry#*:}"
         mui_bad_case "$dir" || return 1

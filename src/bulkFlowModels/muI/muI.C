@@ -342,15 +342,34 @@ void Foam::bulkFlowModels::muI::advectAlpha()
             }
         }
 
-        MULES::explicitSolve
-        (
-            geometricOneField(),
-            alpha_,
-            phi_,
-            alphaPhi_,
-            oneField(),
-            zeroField()
-        );
+        if (deposition_.valid())
+        {
+            // the pour's bulk appears in its landing cells: k (1 - alpha),
+            // implicit in alpha, keeps alpha <= 1 whatever else flows in
+            MULES::explicitSolve
+            (
+                geometricOneField(),
+                alpha_,
+                phi_,
+                alphaPhi_,
+                deposition_->Sp(),
+                deposition_->Su(),
+                oneField(),
+                zeroField()
+            );
+        }
+        else
+        {
+            MULES::explicitSolve
+            (
+                geometricOneField(),
+                alpha_,
+                phi_,
+                alphaPhi_,
+                oneField(),
+                zeroField()
+            );
+        }
     }
 }
 
@@ -387,6 +406,10 @@ void Foam::bulkFlowModels::muI::solveAlpha()
         label(std::ceil(alphaCo/maxAlphaCo))
     );
 
+    if (deposition_.valid())
+    {
+        deposition_->beginSolve();
+    }
     if (nSub > 1)
     {
         Time& runTime = const_cast<Time&>(mesh.time());
@@ -405,12 +428,23 @@ void Foam::bulkFlowModels::muI::solveAlpha()
         {
             advectAlpha();
             alphaPhiSum += (runTime.deltaT()/totalDeltaT)*alphaPhi_;
+            if (deposition_.valid())
+            {
+                deposition_->addTaken
+                (
+                    alpha_, (runTime.deltaT()/totalDeltaT).value()
+                );
+            }
         }
         alphaPhi_ = alphaPhiSum;
     }
     else
     {
         advectAlpha();
+        if (deposition_.valid())
+        {
+            deposition_->addTaken(alpha_, 1);
+        }
     }
 
     const dimensionedScalar rhoB("rhoBulk", dimDensity, rhoBulk());
@@ -870,7 +904,7 @@ Foam::bulkFlowModels::muI::muI
                     "rheology", "mu_s", "mu_d", "I_0", "regularised", "d",
                     "rhoS", "packedFraction", "etaMax", "pMin", "rhoAir",
                     "muAir", "outletPatches", "forces", "settlingVelocity",
-                    "emptyAnnulus", "k"
+                    "emptyAnnulus", "k", "deposition"
                 }
             ),
             mixture
@@ -894,6 +928,17 @@ Foam::bulkFlowModels::muI::muI
         (
             coeffs_, "settlingVelocity", dimVelocity, 0
         ).value()
+    ),
+    deposition_
+    (
+        coeffs_.isDict("deposition")
+      ? new bulkDeposition
+        (
+            coeffs_.subDict("deposition"),
+            mixture,
+            packedFraction_
+        )
+      : nullptr
     ),
     pimple_(const_cast<fvMesh&>(mixture.mesh())),
     alpha_(readField(mixture.mesh(), "alpha.granular"), mixture.mesh()),
@@ -1258,6 +1303,14 @@ void Foam::bulkFlowModels::muI::checkFillOverflow()
             );
         }
     }
+    if (deposition_.valid() && deposition_->depositedRate() > 0)
+    {
+        inflow += deposition_->depositedRate();
+        patchInflows.append
+        (
+            Tuple2<word, scalar>("deposition", deposition_->depositedRate())
+        );
+    }
     if (!(inflow > 0))
     {
         return;
@@ -1301,12 +1354,20 @@ void Foam::bulkFlowModels::muI::checkFillOverflow()
 
 void Foam::bulkFlowModels::muI::correct()
 {
+    if (deposition_.valid())
+    {
+        deposition_->update(alpha_);
+    }
     while (pimple_.loop())
     {
         solveAlpha();
         checkFillOverflow();
         updateViscosity();
         solveFlow();
+    }
+    if (deposition_.valid())
+    {
+        deposition_->record();
     }
 }
 

@@ -1261,6 +1261,18 @@ Foam::tmp<Foam::fvScalarMatrix> Foam::speciesAdvection::ddtDiv
         (alpha.oldTime().primitiveField() + emptyWeight_)
        *c.primitiveField()*V*rDeltaT;
 
+    // bulk that appeared in the step (a pour's deposition) brings its own
+    // composition: with the compositions of the feed summing to 1 the
+    // species' sum still follows alpha
+    const volScalarField::Internal* alphaSource =
+        bulkFlow_.bulkFractionSource();
+    if (alphaSource)
+    {
+        eqn.source() +=
+            bulkFlow_.bulkFractionSourceComposition(k)
+           *alphaSource->field()*V;
+    }
+
     eqn *= dimensionedScalar("packedFraction", dimless, packed);
     return tEqn;
 }

@@ -9,7 +9,10 @@ volume ... n.<species> volume ..." (log.segregationDegradationFoam.fill and
 .discharge; the first line is after the first step, so the start is that
 line plus the first step's flows); the flows from the cumulative masses of
 outletComposition (postProcessing/outletComposition/<stage start>/
-<patch>.dat, positive leaving; each stage's record starts from 0).
+<patch>.dat, positive leaving; each stage's record starts from 0). A fill
+deposited where it lands (Allrun -deposition) enters through no patch: its
+record postProcessing/deposition/<start>/deposition.dat (each species'
+solids deposited in all, last line) counts as entered through the inlet.
 
 Exit status 1 if a species' balance is off by more than --tol (relative to
 what entered), the solids' by more than --tol-total, nothing entered or
@@ -72,6 +75,27 @@ def records(case, patch):
     return out
 
 
+def deposited(case):
+    """{species: solids volume} deposited in all (every deposition record),
+    and in the first step of the run (its record's first line)."""
+    out, first = {}, {}
+    for path in glob.glob(os.path.join(case, "postProcessing", "deposition",
+                                       "*", "deposition.dat")):
+        names, rows = [], []
+        with open(path) as f:
+            for line in f:
+                if line.startswith("# time"):
+                    names = re.findall(r"solids (\w+) in all", line)
+                elif line.strip() and not line.startswith("#"):
+                    rows.append([float(v) for v in line.split()])
+        if rows:
+            for name, v in zip(names, rows[-1][-len(names):]):
+                out[name] = out.get(name, 0.0) + v
+            if os.path.basename(os.path.dirname(path)) == "0":
+                first = dict(zip(names, rows[0][-len(names):]))
+    return out, first
+
+
 def cumulative(record, species, row, rho):
     header, rows = record
     return rows[row][header.index("cumulativeMass.%s[kg]" % species)] / rho[species]
@@ -99,18 +123,21 @@ def main():
         return cumulative(stage, sp, row, rho)
 
     ok = True
+    dep, depFirst = deposited(a.case)
     fedTotal = sum(-sum(cum(stage, sp, -1) for stage in patches["inlet"])
-                   for sp in species)
+                   + dep.get(sp, 0.0) for sp in species)
     if not fedTotal > 0:
         print("FAIL: nothing fed (%g m3)" % fedTotal)
         return 1
     errTotal = 0.0
     for sp in species:
-        # The start: the first logged volume plus what left in the first step
+        # The start: the first logged volume plus what left in the first
+        # step (less what was deposited in it)
         start = fill[0][sp] + sum(cum(patches[name][0], sp, 0)
-                                  for name in patches)
+                                  for name in patches) - depFirst.get(sp, 0.0)
         through = {name: sum(cum(stage, sp, -1) for stage in patches[name])
                    for name in patches}
+        through["inlet"] -= dep.get(sp, 0.0)
         expected = start - sum(through.values())
         end = discharge[-1][sp]
         err = (end - expected) / fedTotal
