@@ -105,19 +105,26 @@ test_planar_silo_fill()
 }
 
 # A pour deposited where it lands (Allrun -deposition: the same feed, 1 s,
-# glass beads, 10 mm cells): the check's balance (species 1e-8, solids
+# glass beads, 10 mm cells; serial and on 2 ranks with the spout's column
+# on the processor boundary): the check's balance (species 1e-8, solids
 # 1e-10 of the fill; what was deposited against the pour to 1e-3, a step's
-# worth), bounds; and a heap where the jet digs a crater: the highest
+# worth), bounds, the species' sum packedFraction alpha.granular (1e-8);
+# and a heap where the jet digs a crater: the highest
 # column under the inlet, every column outward no higher than the one
 # inside it (1 mm), the centre more than two cells above the walls
 test_planar_silo_fill_deposition()
 {
     local case
     case=$(fresh_validation_case planarSiloFillDeposition planarSiloFill) || return 1
-    "$case/Allrun" -deposition -fill 1 > "$case/../log.Allrun" 2>&1 \
-        || { tail -20 "$case/../log.Allrun"; return 1; }
-    grep "balance\|entered - fed\|slope beside" "$case/../log.Allrun"
-    python3 - "$case/results/fill.dat" <<'PY'
+    local opts
+    for opts in "" -parallel
+    do
+        "$case/Allrun" -deposition -fill 1 $opts > "$case/../log.Allrun" 2>&1 \
+            || { tail -20 "$case/../log.Allrun"; return 1; }
+        echo "Allrun -deposition -fill 1 $opts:"
+        grep "balance\|entered - fed\|slope beside" "$case/../log.Allrun"
+        python3 -m sdfoam.fieldStats "$case" inBulk --packed 0.6 --tol 1e-8 || return 1
+        python3 - "$case/results/fill.dat" <<'PY'
 import sys
 rows = [list(map(float, l.split())) for l in open(sys.argv[1]) if not l.startswith("#")]
 h = [r[1] for r in rows]
@@ -132,6 +139,8 @@ for side in (half, left):
 print("a heap with its apex under the inlet" if ok else "FAIL: not a heap under the inlet")
 sys.exit(0 if ok else 1)
 PY
+        [ $? -eq 0 ] || return 1
+    done
 }
 
 # The bounded heap's limits (Fan et al. 2014; Schlick et al. 2015), half

@@ -106,7 +106,7 @@ test_silo3D_fill()
 # the solids' 1e-10), bounds and the total at the packed fraction (1e-8),
 # and the heap (./heapProfile): its apex in the ring under the inlet, its
 # flank rising towards it at more than 10 degrees (the jet's crater slopes
-# the other way; 23.7 degrees measured serial, atan(mu_s) 18.9)
+# the other way; 23.0 degrees measured, atan(mu_s) 18.9)
 test_silo3D_fill_deposition()
 {
     local tree="$workRoot/silo3DFillDeposition"

@@ -408,6 +408,7 @@ void Foam::bulkFlowModels::muI::solveAlpha()
 
     if (deposition_.valid())
     {
+        deposition_->setSubCycles(nSub);
         deposition_->beginSolve();
     }
     if (nSub > 1)
@@ -931,7 +932,7 @@ Foam::bulkFlowModels::muI::muI
     ),
     deposition_
     (
-        coeffs_.isDict("deposition")
+        coeffs_.found("deposition")
       ? new bulkDeposition
         (
             coeffs_.subDict("deposition"),

@@ -29,6 +29,8 @@ import os
 import re
 import sys
 
+from sdfoam import deposition
+
 
 
 def densities(case):
@@ -75,27 +77,6 @@ def records(case, patch):
     return out
 
 
-def deposited(case):
-    """{species: solids volume} deposited in all (every deposition record),
-    and in the first step of the run (its record's first line)."""
-    out, first = {}, {}
-    for path in glob.glob(os.path.join(case, "postProcessing", "deposition",
-                                       "*", "deposition.dat")):
-        names, rows = [], []
-        with open(path) as f:
-            for line in f:
-                if line.startswith("# time"):
-                    names = re.findall(r"solids (\w+) in all", line)
-                elif line.strip() and not line.startswith("#"):
-                    rows.append([float(v) for v in line.split()])
-        if rows:
-            for name, v in zip(names, rows[-1][-len(names):]):
-                out[name] = out.get(name, 0.0) + v
-            if os.path.basename(os.path.dirname(path)) == "0":
-                first = dict(zip(names, rows[0][-len(names):]))
-    return out, first
-
-
 def cumulative(record, species, row, rho):
     header, rows = record
     return rows[row][header.index("cumulativeMass.%s[kg]" % species)] / rho[species]
@@ -123,7 +104,7 @@ def main():
         return cumulative(stage, sp, row, rho)
 
     ok = True
-    dep, depFirst = deposited(a.case)
+    dep, depFirst = deposition.speciesTotals(a.case)
     fedTotal = sum(-sum(cum(stage, sp, -1) for stage in patches["inlet"])
                    + dep.get(sp, 0.0) for sp in species)
     if not fedTotal > 0:

@@ -10,14 +10,14 @@
 #include "granularMixture.H"
 #include "modelCoeffs.H"
 #include "Map.H"
+#include "surfaceFields.H"
 
 // * * * * * * * * * * * * * * * * * Constants * * * * * * * * * * * * * * * //
 
 namespace
 {
-    // A cell is full (no landing in it) above this bulk fraction, and what
-    // lies below a cell holds the stream up from this one
-    constexpr Foam::scalar fullFraction = 0.999;
+    // A cell at least this full holds up the stream (the one above it is
+    // where it lands); one less full is where it lands if it is held up
     constexpr Foam::scalar supportFraction = 0.5;
 }
 
@@ -58,6 +58,8 @@ Foam::bulkDeposition::bulkDeposition
         mesh_,
         dimensionedScalar(dimless/dimTime, Zero)
     ),
+    share_(mesh_.nCells(), Zero),
+    alpha0_(mesh_.nCells(), Zero),
     poured_(0),
     deposited_(0),
     depositedSpecies_(mixture.size(), Zero)
@@ -139,7 +141,7 @@ Foam::bulkDeposition::bulkDeposition
         mkDir(dir);
         file_.reset(new OFstream(dir/"deposition.dat"));
         OFstream& os = file_();
-        os.precision(10);
+        os.precision(15);
         os  << "# the pour deposited where it lands (muICoeffs/deposition):"
             << " rate " << rate_ << " m3/s of bulk at solids fraction "
             << packedFraction_ << ", spout through " << centre_
@@ -210,6 +212,8 @@ Foam::scalarList Foam::bulkDeposition::alphaBelow
     const labelUList& own = mesh_.faceOwner();
     const labelUList& nei = mesh_.faceNeighbour();
     const polyBoundaryMesh& patches = mesh_.boundaryMesh();
+    const surfaceScalarField& phi =
+        mesh_.lookupObject<surfaceScalarField>("phi");
 
     // the neighbours' values on the coupled patches met (processor, cyclic)
     Map<scalarField> neighbourValues;
@@ -227,7 +231,11 @@ Foam::scalarList Foam::bulkDeposition::alphaBelow
         const fvPatchScalarField& alphap = alpha.boundaryField()[patchi];
         if (!alphap.coupled())
         {
-            below[i] = 1;   // a floor: a wall, the hopper, a closed outlet
+            // a floor: a wall, the hopper, a closed outlet; not a face the
+            // flux leaves through (an open outlet)
+            const scalar phib =
+                phi.boundaryField()[patchi][facei - patches[patchi].start()];
+            below[i] = phib > 0 ? 0 : 1;
             continue;
         }
         if (!neighbourValues.found(patchi))
@@ -242,11 +250,18 @@ Foam::scalarList Foam::bulkDeposition::alphaBelow
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
+Foam::scalar Foam::bulkDeposition::pourFraction() const
+{
+    // the share of the step [t - dt, t] inside [start, end)
+    const scalar t = mesh_.time().value();
+    const scalar dt = mesh_.time().deltaTValue();
+    return max(min(t, end_) - max(t - dt, start_), scalar(0))/dt;
+}
+
+
 bool Foam::bulkDeposition::pouring() const
 {
-    const scalar tMid =
-        mesh_.time().value() - 0.5*mesh_.time().deltaTValue();
-    return tMid >= start_ && tMid < end_;
+    return pourFraction() > 0;
 }
 
 
@@ -255,6 +270,7 @@ void Foam::bulkDeposition::update(const volScalarField& alpha)
     k_ = dimensionedScalar(dimless/dimTime, Zero);
     minusK_ = dimensionedScalar(dimless/dimTime, Zero);
     source_ = dimensionedScalar(dimless/dimTime, Zero);
+    share_ = Zero;
     if (!pouring())
     {
         return;
@@ -264,25 +280,38 @@ void Foam::bulkDeposition::update(const volScalarField& alpha)
     const scalar dt = mesh_.time().deltaTValue();
     const scalarList below(alphaBelow(alpha));
 
-    // the landing cells take the rate by their footprints, none more than
-    // the air it holds; what a filled cell cannot take goes to the others
+    // The landing cells: one per stack, the first less than half full over
+    // one at least half full (or a floor); they take the rate by their
+    // footprints, none more than half the air it holds, and what a cell
+    // cannot take goes to the others
     scalarList given(cells_.size(), Zero), capacity(cells_.size(), Zero);
     boolList open(cells_.size(), false);
+    label nOpen = 0;
     forAll(cells_, i)
     {
         const label celli = cells_[i];
-        if (alpha[celli] < fullFraction && below[i] >= supportFraction)
+        if
+        (
+            alpha[celli] < supportFraction
+         && below[i] >= supportFraction
+         && footprint_[i] > 0
+        )
         {
-            open[i] = footprint_[i] > 0;
+            open[i] = true;
+            ++nOpen;
             capacity[i] = 0.5*(1 - alpha[celli])*V[celli]/dt;
         }
     }
-    // the rate, with what the steps before took more or less than the
-    // pour (a cell's take depends on what else flows in and out of it in
-    // the step): the total follows the pour to within a step
-    scalar remaining = max(rate_ + (poured_ - deposited_)/dt, scalar(0));
-    const scalar target = remaining;
-    for (label iter = 0; iter < 100 && remaining > 1e-12*rate_; ++iter)
+    reduce(nOpen, sumOp<label>());
+
+    // The pour in this step, with what the steps before took more or less
+    // than poured (a cell's take depends on what else flows in and out of
+    // it in the step): the total follows the pour to within a step
+    const scalar pour = rate_*pourFraction();
+    const scalar target = max(pour + (poured_ - deposited_)/dt, scalar(0));
+    scalar remaining = target;
+    // each pass places everything or fills at least one more cell
+    for (label pass = 0; pass <= nOpen && remaining > 1e-12*rate_; ++pass)
     {
         scalar weight = 0;
         forAll(open, i)
@@ -307,29 +336,47 @@ void Foam::bulkDeposition::update(const volScalarField& alpha)
         reduce(used, sumOp<scalar>());
         remaining -= used;
     }
-    if (remaining > 1e-9*target)
+    // What cannot be placed now is made up in the next steps; only a
+    // column that cannot take this step's own pour is full
+    if (target - remaining < (1 - 1e-9)*min(pour, target))
     {
         FatalErrorInFunction
             << "muICoeffs/deposition at time " << mesh_.time().timeName()
             << ": the landing cells under the spout (through " << centre_
             << ", radius " << radius_ << " m) take only " << target - remaining
-            << " of the " << target << " m3/s poured: the deposit has filled"
+            << " of the " << pour << " m3/s poured: the deposit has filled"
             << " the spout's column. End the pour earlier ('end') or lower"
             << " its 'rate'." << exit(FatalError);
     }
 
-    // k such that a cell nothing else flows into takes its share s (as a
-    // fraction of its volume) in the step: k dt (1 - a)/(1 + k dt) = s,
-    // k dt = s/(1 - a - s), at most 1 with s <= (1 - a)/2
+    // Each cell's share of its volume in the step; k follows with the
+    // number of alpha's sub-cycles (setSubCycles)
     forAll(cells_, i)
     {
         if (given[i] > 0)
         {
-            const label celli = cells_[i];
-            const scalar share = given[i]*dt/V[celli];
-            k_[celli] = share/((1 - alpha[celli] - share)*dt);
-            minusK_[celli] = -k_[celli];
+            share_[cells_[i]] = given[i]*dt/V[cells_[i]];
         }
+    }
+    alpha0_ = alpha.primitiveField();
+}
+
+
+void Foam::bulkDeposition::setSubCycles(const label nSub)
+{
+    // k such that a cell nothing else flows into takes its share s in the
+    // step's nSub implicit sub-steps: (1 - a)(1 - (1 + k dt/n)^-n) = s,
+    // k = n/dt ((1 - s/(1 - a))^(-1/n) - 1); with s <= (1 - a)/2, k dt <=
+    // n (2^(1/n) - 1) <= 1
+    const scalar dt = mesh_.time().deltaTValue();
+    for (const label celli : cells_)
+    {
+        const scalar s = share_[celli];
+        k_[celli] =
+            s > 0
+          ? nSub/dt*(pow(1 - s/(1 - alpha0_[celli]), -1.0/nSub) - 1)
+          : 0;
+        minusK_[celli] = -k_[celli];
     }
 }
 
@@ -368,7 +415,7 @@ void Foam::bulkDeposition::record()
     const scalar rate = depositedRate();
     const scalar dt = mesh_.time().deltaTValue();
     deposited_ += rate*dt;
-    poured_ += rate_*dt;
+    poured_ += rate_*pourFraction()*dt;
     forAll(depositedSpecies_, k)
     {
         depositedSpecies_[k] += packedFraction_*composition_[k]*rate*dt;
