@@ -597,7 +597,8 @@ test_mui_bad_input()
         "deposition { rate 1e-4; centre (0 0 0); radius 1e3; composition { } }:No entry for species 'grain'" \
         "deposition { rate 1e-4; centre (0 0 0); radius 1e3; composition { grain 0.5; } }:sum to 0.5, not 1" \
         "deposition { rate 1e-4; centre (0 0 0); radius 1e3; composition { grain 1; } start 1; end 1; }:'end 1' must be after 'start 1'" \
-        "deposition { rate 1e-4; centre (1e3 1e3 0); radius 1e-6; composition { grain 1; } }:No cell centre lies within 'radius 1e-06'"
+        "deposition { rate 1e-4; centre (1e3 1e3 0); radius 1e-6; composition { grain 1; } }:No cell centre lies within 'radius 1e-06'" \
+        "deposition yes:'deposition' must be a dictionary"
     do
         value="${entry%%:*}"; expect="${entry#*:}"
         mui_bad_case "$dir" || return 1

@@ -96,6 +96,25 @@ Foam::scalar positiveEntry
 // in muICoeffs, the entries of the sub-dictionary rheology of
 // constant/granularCoefficients (calibrateGranularMixture, coefficient
 // rheology) added to muICoeffs; with `rheology given` (default) as it is
+// muICoeffs/deposition (a pour deposited where it lands), or nullptr; an
+// entry that is not a dictionary is refused
+const Foam::dictionary* depositionDict(const Foam::dictionary& coeffs)
+{
+    if (!coeffs.found("deposition"))
+    {
+        return nullptr;
+    }
+    if (!coeffs.isDict("deposition"))
+    {
+        FatalIOErrorInFunction(coeffs)
+            << "'deposition' must be a dictionary: { rate [m3/s]; centre"
+            << " (x y z); radius [m]; composition { <species> <fraction>;"
+            << " ... } start [s]; end [s]; }" << Foam::nl
+            << Foam::exit(Foam::FatalIOError);
+    }
+    return &coeffs.subDict("deposition");
+}
+
 Foam::dictionary withCalibratedRheology
 (
     const Foam::dictionary& dict,
@@ -932,13 +951,8 @@ Foam::bulkFlowModels::muI::muI
     ),
     deposition_
     (
-        coeffs_.found("deposition")
-      ? new bulkDeposition
-        (
-            coeffs_.subDict("deposition"),
-            mixture,
-            packedFraction_
-        )
+        depositionDict(coeffs_)
+      ? new bulkDeposition(*depositionDict(coeffs_), mixture, packedFraction_)
       : nullptr
     ),
     pimple_(const_cast<fvMesh&>(mixture.mesh())),
