@@ -1318,13 +1318,12 @@ void Foam::bulkFlowModels::muI::checkFillOverflow()
             );
         }
     }
-    if (deposition_.valid() && deposition_->depositedRate() > 0)
+    const scalar deposited =
+        deposition_.valid() ? deposition_->depositedRate() : 0;
+    if (deposited > 0)
     {
-        inflow += deposition_->depositedRate();
-        patchInflows.append
-        (
-            Tuple2<word, scalar>("deposition", deposition_->depositedRate())
-        );
+        inflow += deposited;
+        patchInflows.append(Tuple2<word, scalar>("deposition", deposited));
     }
     if (!(inflow > 0))
     {

@@ -58,8 +58,6 @@ Foam::bulkDeposition::bulkDeposition
         mesh_,
         dimensionedScalar(dimless/dimTime, Zero)
     ),
-    share_(mesh_.nCells(), Zero),
-    alpha0_(mesh_.nCells(), Zero),
     poured_(0),
     deposited_(0),
     depositedSpecies_(mixture.size(), Zero)
@@ -201,6 +199,7 @@ void Foam::bulkDeposition::findColumn()
     cells_.transfer(cells);
     downFace_.transfer(down);
     footprint_.transfer(footprint);
+    airShare_.setSize(cells_.size(), Zero);
 }
 
 
@@ -270,7 +269,7 @@ void Foam::bulkDeposition::update(const volScalarField& alpha)
     k_ = dimensionedScalar(dimless/dimTime, Zero);
     minusK_ = dimensionedScalar(dimless/dimTime, Zero);
     source_ = dimensionedScalar(dimless/dimTime, Zero);
-    share_ = Zero;
+    airShare_ = Zero;
     if (!pouring())
     {
         return;
@@ -349,33 +348,32 @@ void Foam::bulkDeposition::update(const volScalarField& alpha)
             << " its 'rate'." << exit(FatalError);
     }
 
-    // Each cell's share of its volume in the step; k follows with the
-    // number of alpha's sub-cycles (setSubCycles)
+    // Each cell's share of the air it holds; k follows with the number of
+    // alpha's sub-cycles (setSubCycles)
+    // (capacity > 0, so air, wherever a share was given)
     forAll(cells_, i)
     {
         if (given[i] > 0)
         {
-            share_[cells_[i]] = given[i]*dt/V[cells_[i]];
+            const label celli = cells_[i];
+            airShare_[i] = given[i]*dt/V[celli]/(1 - alpha[celli]);
         }
     }
-    alpha0_ = alpha.primitiveField();
 }
 
 
 void Foam::bulkDeposition::setSubCycles(const label nSub)
 {
-    // k such that a cell nothing else flows into takes its share s in the
-    // step's nSub implicit sub-steps: (1 - a)(1 - (1 + k dt/n)^-n) = s,
-    // k = n/dt ((1 - s/(1 - a))^(-1/n) - 1); with s <= (1 - a)/2, k dt <=
-    // n (2^(1/n) - 1) <= 1
+    // k such that a cell nothing else flows into takes its share s of its
+    // volume in the step's nSub implicit sub-steps: (1 - a)(1 - (1 + k
+    // dt/n)^-n) = s, k = n/dt ((1 - r)^(-1/n) - 1) with r = s/(1 - a), the
+    // share of its air; with r <= 1/2, k dt <= n (2^(1/n) - 1) <= 1
     const scalar dt = mesh_.time().deltaTValue();
-    for (const label celli : cells_)
+    forAll(cells_, i)
     {
-        const scalar s = share_[celli];
-        k_[celli] =
-            s > 0
-          ? nSub/dt*(pow(1 - s/(1 - alpha0_[celli]), -1.0/nSub) - 1)
-          : 0;
+        const label celli = cells_[i];
+        const scalar r = airShare_[i];
+        k_[celli] = r > 0 ? nSub/dt*(pow(1 - r, -1.0/nSub) - 1) : 0;
         minusK_[celli] = -k_[celli];
     }
 }
