@@ -81,8 +81,8 @@ test_silo_calibrated()
     local dir="$workRoot/siloCalibrated"
     rm -rf "$dir"; mkdir -p "$dir"
     cp -r "$projectDir/tutorials/silo2D/"* "$dir/"
-    "$dir/Allrun" -calibrated -quick -endTime 2 -writeInterval 1 > "$dir/log.Allrun" 2>&1 \
-        || { tail -20 "$dir/log.Allrun"; return 1; }
+    "$dir/Allrun" -calibrated -quick -endTime 2 -writeInterval 1 > "$dir.Allrun.log" 2>&1 \
+        || { tail -20 "$dir.Allrun.log"; return 1; }
     grep -E "Selecting diffusivity model calibrated" "$dir/log.segregationDegradationFoam" || { echo "calibrated model not used"; return 1; }
     grep -E "calibrated D: powerLaw" "$dir/log.segregationDegradationFoam" || return 1
     python3 -m sdfoam.fieldStats "$dir" bounds --tol 1e-8
@@ -205,8 +205,8 @@ test_silo_breakage()
     local dir="$workRoot/siloBreakage"
     rm -rf "$dir"; mkdir -p "$dir"
     cp -r "$projectDir/tutorials/silo2D/"* "$dir/"
-    "$dir/Allrun" -breakage -endTime 3 -writeInterval 1 > "$dir/log.Allrun" 2>&1 \
-        || { tail -20 "$dir/log.Allrun"; return 1; }
+    "$dir/Allrun" -breakage -endTime 3 -writeInterval 1 > "$dir.Allrun.log" 2>&1 \
+        || { tail -20 "$dir.Allrun.log"; return 1; }
     grep -q "Selecting breakage model powerLaw" "$dir/log.segregationDegradationFoam" || { echo "breakage not selected"; return 1; }
     python3 - "$dir" <<'PY' || return 1
 import math, re, sys
@@ -489,8 +489,8 @@ test_silo2D_fill_calibrated_rheology()
     cp -r "$projectDir/tutorials/silo2D" "$projectDir/tutorials/resources" "$tree/"
     cp -r "$projectDir/tutorials/silo3D/muI" "$tree/silo3D/"
     local dir="$tree/silo2D"
-    (cd "$dir" && ./Allrun -fill 0.5 -endTime 0.3 -writeInterval 0.1 -rheology shipped > log.Allrun 2>&1) \
-        || { tail -30 "$dir/log.Allrun"; return 1; }
+    (cd "$dir" && ./Allrun -fill 0.5 -endTime 0.3 -writeInterval 0.1 -rheology shipped > "$tree/log.Allrun" 2>&1) \
+        || { tail -30 "$tree/log.Allrun"; return 1; }
     local phi
     phi=$(foamDictionary -entry rheology/packedFraction -value "$dir/constant/granularCoefficients") || return 1
     grep "muI: rheology calibrated" "$dir/log.segregationDegradationFoam.fill" \
@@ -518,8 +518,8 @@ test_silo2D_fill()
     cp -r "$projectDir/tutorials/silo2D" "$projectDir/tutorials/resources" "$tree/"
     cp -r "$projectDir/tutorials/silo3D/muI" "$tree/silo3D/"
     local dir="$tree/silo2D"
-    (cd "$dir" && ./Allrun -fill 0.5 -endTime 0.3 -writeInterval 0.1 > log.Allrun 2>&1) \
-        || { tail -30 "$dir/log.Allrun"; return 1; }
+    (cd "$dir" && ./Allrun -fill 0.5 -endTime 0.3 -writeInterval 0.1 > "$tree/log.Allrun" 2>&1) \
+        || { tail -30 "$tree/log.Allrun"; return 1; }
     python3 "$projectDir/tests/solver/silo/checkFill.py" "$dir" --tol-total 1e-9 || return 1
     python3 -m sdfoam.fieldStats "$dir" bounds --tol 1e-8 --packed 0.6 || return 1
     python3 -m sdfoam.fieldStats "$dir" inBulk --packed 0.6 --tol 1e-8

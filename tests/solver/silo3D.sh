@@ -9,7 +9,7 @@ silo3D_run()
     rm -rf "$dir"; mkdir -p "$dir"
     (cd "$projectDir/tutorials/silo3D" && cp -r 0.orig constant system Allrun Allclean \
         writeSiloSTL plotOutletComposition renderMidPlane.py muI "$dir/")
-    (cd "$dir" && ./Allrun "$@" > log.Allrun 2>&1) || { tail -30 "$dir/log.Allrun"; return 1; }
+    (cd "$dir" && ./Allrun "$@" > "$dir.Allrun.log" 2>&1) || { tail -30 "$dir.Allrun.log"; return 1; }
 }
 
 # The tutorial on a coarse background mesh (h 20 mm), 4 s of discharge:
@@ -91,8 +91,8 @@ test_silo3D_fill()
     rm -rf "$tree"; mkdir -p "$tree"
     cp -r "$projectDir/tutorials/silo3D" "$projectDir/tutorials/resources" "$tree/"
     local dir="$tree/silo3D"
-    (cd "$dir" && ./Allrun -fill 0.4 -endTime 0.2 -writeInterval 0.1 -h 0.02 -noRender > log.Allrun 2>&1) \
-        || { tail -30 "$dir/log.Allrun"; return 1; }
+    (cd "$dir" && ./Allrun -fill 0.4 -endTime 0.2 -writeInterval 0.1 -h 0.02 -noRender > ../log.Allrun 2>&1) \
+        || { tail -30 "$dir/../log.Allrun"; return 1; }
     python3 "$projectDir/tests/solver/silo/checkFill.py" "$dir" || return 1
     python3 -m sdfoam.fieldStats "$dir" bounds --tol 1e-8 --packed 0.6 || return 1
     python3 -m sdfoam.fieldStats "$dir" inBulk --packed 0.6 --tol 1e-8
@@ -114,8 +114,8 @@ test_silo3D_fill_deposition()
     cp -r "$projectDir/tutorials/silo3D" "$projectDir/tutorials/resources" "$tree/"
     local dir="$tree/silo3D" packed
     (cd "$dir" && ./Allrun -serial -flat -fill 2 -feed 0.25 -deposition -rheology shipped \
-        -endTime 0.25 -writeInterval 0.25 -h 0.02 -noRender > log.Allrun 2>&1) \
-        || { tail -30 "$dir/log.Allrun"; return 1; }
+        -endTime 0.25 -writeInterval 0.25 -h 0.02 -noRender > ../log.Allrun 2>&1) \
+        || { tail -30 "$dir/../log.Allrun"; return 1; }
     python3 "$projectDir/tests/solver/silo/checkFill.py" "$dir" || return 1
     packed=$(foamDictionary -entry rheology.packedFraction -value "$dir/constant/granularCoefficients") || return 1
     python3 -m sdfoam.fieldStats "$dir" bounds --tol 1e-8 --packed "$packed" || return 1
