@@ -1,0 +1,150 @@
+// fitBreakageParameters: the Vogel-Peukert constants of a material from its single-particle
+// impact tests (fit/ImpactTests.hpp: the table; fit/BreakageFit.hpp: the maximum-likelihood
+// fit), written as the entries a case's wallImpactCoeffs includes.
+//
+//   fitBreakageParameters TABLE [output=PREFIX]
+//
+// Writes PREFIX-wallImpactCoeffs (fMat and xWmMin, their standard errors, correlation and
+// the fit's check as comments; `#include` it inside breakage/wallImpactCoeffs),
+// PREFIX-fit.dat (per test: the observed and fitted fractions broken, the Pearson
+// residual) and PREFIX-fit.png (gnuplot, when installed). PREFIX defaults to TABLE
+// without its extension. Bad input: a message naming the file, line and column, exit
+// status 1, nothing written.
+#include "fit/BreakageFit.hpp"
+#include "fit/ImpactTests.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <iomanip>
+#include <iostream>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+
+using namespace sdf::fit::breakage;
+
+namespace
+{
+
+struct Arguments
+{
+    std::string table;
+    std::string prefix;
+};
+
+Arguments parse(int argc, char** argv)
+{
+    Arguments a;
+    for (int i = 1; i < argc; ++i)
+    {
+        const std::string arg = argv[i];
+        if (arg.rfind("output=", 0) == 0) a.prefix = arg.substr(7);
+        else if (a.table.empty() && arg.find('=') == std::string::npos) a.table = arg;
+        else throw std::invalid_argument("unknown argument '" + arg + "' (usage: fitBreakageParameters TABLE [output=PREFIX])");
+    }
+    if (a.table.empty()) throw std::invalid_argument("no table of impact tests (usage: fitBreakageParameters TABLE [output=PREFIX])");
+    if (a.prefix.empty())
+    {
+        const std::size_t slash = a.table.find_last_of('/');
+        const std::size_t dot = a.table.find_last_of('.');
+        a.prefix = dot != std::string::npos && (slash == std::string::npos || dot > slash)
+            ? a.table.substr(0, dot) : a.table;
+    }
+    return a;
+}
+
+std::string entries(const BreakageFitResult& fit, const Arguments& a, std::size_t rows)
+{
+    std::ostringstream s;
+    s << std::setprecision(6);
+    s << "// Vogel & Peukert's constants fitted by fitBreakageParameters to " << rows
+      << " rows of impact tests (" << a.table << ")\n"
+      << "// by maximum likelihood of the binomial counts; the errors are standard errors\n"
+      << "fMat            " << fit.material.fMat << ";   // [kg/(J m)] +- " << fit.fMatError << "\n"
+      << "xWmMin          " << fit.material.xWmMin << ";   // [J m/kg] +- " << fit.xWmMinError
+      << (fit.thresholdAtZero ? " (at its bound 0)" : "") << "\n"
+      << "// correlation of the two estimates " << fit.correlation << "; deviance "
+      << fit.deviance << " on " << fit.degreesOfFreedom << " degrees of freedom (p "
+      << fit.pValue << ")\n";
+    return s.str();
+}
+
+} // namespace
+
+int main(int argc, char** argv)
+{
+    try
+    {
+        const Arguments a = parse(argc, argv);
+        const auto tests = readImpactTests(a.table);
+        const BreakageFitResult fit = fitVogelPeukert(tests);
+
+        std::cout << "fitBreakageParameters: " << tests.size() << " rows of impact tests from "
+                  << a.table << "\n"
+                  << "  fMat   " << fit.material.fMat << " +- " << fit.fMatError << " kg/(J m)\n"
+                  << "  xWmMin " << fit.material.xWmMin << " +- " << fit.xWmMinError << " J m/kg"
+                  << (fit.thresholdAtZero ? " (the likelihood is largest at the bound 0)" : "") << "\n"
+                  << "  correlation " << fit.correlation << "\n"
+                  << "  check: deviance " << fit.deviance << " on " << fit.degreesOfFreedom
+                  << " degrees of freedom, p " << fit.pValue
+                  << (fit.pValue < 0.01 ? ": the law does not describe these tests (p < 0.01); see the residuals" : "")
+                  << "\n  mean Pearson residual by size:";
+        for (const SizeResidual& s : fit.bySize)
+        {
+            std::cout << " " << s.size << " m: " << s.meanResidual << " (" << s.rows << " rows)";
+        }
+        std::cout << "\n";
+
+        const std::string coeffs = a.prefix + "-wallImpactCoeffs";
+        const std::string data = a.prefix + "-fit.dat";
+        {
+            std::ofstream out(coeffs);
+            out << entries(fit, a, tests.size());
+            if (!out) throw std::runtime_error("cannot write " + coeffs);
+        }
+        {
+            std::ofstream out(data);
+            out << "# size[m] energy[J/kg] impacts tested broken xW[J m/kg] observedFraction fittedProbability pearsonResidual\n"
+                << std::setprecision(8);
+            for (std::size_t i = 0; i < tests.size(); ++i)
+            {
+                const ImpactTest& t = tests[i];
+                out << t.size << " " << t.energy << " " << t.impacts << " " << t.tested << " "
+                    << t.broken << " " << t.size*t.energy << " "
+                    << double(t.broken)/double(t.tested) << " " << fit.probability[i] << " "
+                    << fit.pearsonResidual[i] << "\n";
+            }
+            if (!out) throw std::runtime_error("cannot write " + data);
+        }
+        std::cout << "written " << coeffs << " (include it in breakage/wallImpactCoeffs) and " << data << "\n";
+
+        // the plot: observed and fitted fractions against x W per impacts
+        std::ostringstream gp;
+        gp << std::setprecision(8)
+           << "set terminal pngcairo size 900,600 enhanced font ',11'\n"
+           << "set output '" << a.prefix << "-fit.png'\n"
+           << "set title 'Impact tests and the fitted Vogel-Peukert law (fMat " << fit.material.fMat
+           << ", xWmMin " << fit.material.xWmMin << ")'\n"
+           << "set xlabel 'x W, size times mass-specific impact energy [J m/kg]'\n"
+           << "set ylabel 'fraction broken'\nset yrange [0:1]\nset key bottom right\n"
+           << "f = " << fit.material.fMat << "; c = " << fit.material.xWmMin << "\n"
+           << "P(u, k) = u > c ? 1 - exp(-f*k*(u - c)) : 0\n"
+           << "plot '" << data << "' using 6:7:(sqrt($7*(1-$7)/$4)) with yerrorbars pt 7 title 'tests (binomial error)', "
+           << "P(x, 1) with lines lw 2 title 'fit, one impact', P(x, 2) with lines lw 2 dt 2 title 'fit, two impacts'\n";
+        FILE* pipe = popen("gnuplot 2>/dev/null", "w");
+        if (pipe)
+        {
+            std::fputs(gp.str().c_str(), pipe);
+            if (pclose(pipe) == 0) std::cout << "plot " << a.prefix << "-fit.png\n";
+            else std::cout << "gnuplot failed: no plot\n";
+        }
+        return 0;
+    }
+    catch (const std::exception& e)
+    {
+        std::cerr << "fitBreakageParameters: error: " << e.what() << "\n";
+        return 1;
+    }
+}
