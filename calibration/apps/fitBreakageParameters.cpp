@@ -14,6 +14,7 @@
 #include "fit/ImpactTests.hpp"
 
 #include <cmath>
+#include <csignal>
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
@@ -55,6 +56,13 @@ Arguments parse(int argc, char** argv)
     return a;
 }
 
+std::string str(double v)
+{
+    std::ostringstream s;
+    s << std::setprecision(6) << v;
+    return s.str();
+}
+
 std::string entries(const BreakageFitResult& fit, const Arguments& a, std::size_t rows)
 {
     std::ostringstream s;
@@ -63,8 +71,9 @@ std::string entries(const BreakageFitResult& fit, const Arguments& a, std::size_
       << " rows of impact tests (" << a.table << ")\n"
       << "// by maximum likelihood of the binomial counts; the errors are standard errors\n"
       << "fMat            " << fit.material.fMat << ";   // [kg/(J m)] +- " << fit.fMatError << "\n"
-      << "xWmMin          " << fit.material.xWmMin << ";   // [J m/kg] +- " << fit.xWmMinError
-      << (fit.thresholdAtZero ? " (at its bound 0)" : "") << "\n"
+      << "xWmMin          " << fit.material.xWmMin << ";   // [J m/kg] "
+      << (fit.thresholdAtZero ? std::string("at its bound 0 (no standard error)")
+                              : "+- " + str(fit.xWmMinError)) << "\n"
       << "// correlation of the two estimates " << fit.correlation << "; deviance "
       << fit.deviance << " on " << fit.degreesOfFreedom << " degrees of freedom (p "
       << fit.pValue << ")\n";
@@ -84,8 +93,9 @@ int main(int argc, char** argv)
         std::cout << "fitBreakageParameters: " << tests.size() << " rows of impact tests from "
                   << a.table << "\n"
                   << "  fMat   " << fit.material.fMat << " +- " << fit.fMatError << " kg/(J m)\n"
-                  << "  xWmMin " << fit.material.xWmMin << " +- " << fit.xWmMinError << " J m/kg"
-                  << (fit.thresholdAtZero ? " (the likelihood is largest at the bound 0)" : "") << "\n"
+                  << "  xWmMin " << fit.material.xWmMin
+                  << (fit.thresholdAtZero ? std::string(" J m/kg: the likelihood is largest at the bound 0 (no standard error)")
+                                          : " +- " + str(fit.xWmMinError) + " J m/kg") << "\n"
                   << "  correlation " << fit.correlation << "\n"
                   << "  check: deviance " << fit.deviance << " on " << fit.degreesOfFreedom
                   << " degrees of freedom, p " << fit.pValue
@@ -97,26 +107,35 @@ int main(int argc, char** argv)
         }
         std::cout << "\n";
 
+        if (!std::isfinite(fit.fMatError))
+        {
+            throw std::runtime_error("the likelihood has no curvature in fMat at its maximum: "
+                                     "no standard error, nothing written");
+        }
+        // both files composed before either is written: a failure leaves neither
         const std::string coeffs = a.prefix + "-wallImpactCoeffs";
         const std::string data = a.prefix + "-fit.dat";
+        std::ostringstream table;
+        table << "# size[m] energy[J/kg] impacts tested broken xW[J m/kg] observedFraction fittedProbability pearsonResidual\n"
+              << std::setprecision(8);
+        for (std::size_t i = 0; i < tests.size(); ++i)
         {
-            std::ofstream out(coeffs);
-            out << entries(fit, a, tests.size());
-            if (!out) throw std::runtime_error("cannot write " + coeffs);
+            const ImpactTest& t = tests[i];
+            table << t.size << " " << t.energy << " " << t.impacts << " " << t.tested << " "
+                  << t.broken << " " << t.size*t.energy << " "
+                  << double(t.broken)/double(t.tested) << " " << fit.probability[i] << " "
+                  << fit.pearsonResidual[i] << "\n";
         }
+        for (const auto& [path, text] : {std::pair{coeffs, entries(fit, a, tests.size())},
+                                         std::pair{data, table.str()}})
         {
-            std::ofstream out(data);
-            out << "# size[m] energy[J/kg] impacts tested broken xW[J m/kg] observedFraction fittedProbability pearsonResidual\n"
-                << std::setprecision(8);
-            for (std::size_t i = 0; i < tests.size(); ++i)
+            std::ofstream out(path);
+            out << text;
+            if (!out)
             {
-                const ImpactTest& t = tests[i];
-                out << t.size << " " << t.energy << " " << t.impacts << " " << t.tested << " "
-                    << t.broken << " " << t.size*t.energy << " "
-                    << double(t.broken)/double(t.tested) << " " << fit.probability[i] << " "
-                    << fit.pearsonResidual[i] << "\n";
+                std::remove(coeffs.c_str());
+                throw std::runtime_error("cannot write " + path);
             }
-            if (!out) throw std::runtime_error("cannot write " + data);
         }
         std::cout << "written " << coeffs << " (include it in breakage/wallImpactCoeffs) and " << data << "\n";
 
@@ -133,6 +152,8 @@ int main(int argc, char** argv)
            << "P(u, k) = u > c ? 1 - exp(-f*k*(u - c)) : 0\n"
            << "plot '" << data << "' using 6:7:(sqrt($7*(1-$7)/$4)) with yerrorbars pt 7 title 'tests (binomial error)', "
            << "P(x, 1) with lines lw 2 title 'fit, one impact', P(x, 2) with lines lw 2 dt 2 title 'fit, two impacts'\n";
+        // without gnuplot the shell exits at once: a write to its pipe must not kill us
+        std::signal(SIGPIPE, SIG_IGN);
         FILE* pipe = popen("gnuplot 2>/dev/null", "w");
         if (pipe)
         {

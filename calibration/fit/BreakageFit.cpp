@@ -82,7 +82,8 @@ double profile(double xWmMin, const std::vector<ImpactTest>& tests)
 double bestThreshold(double cMax, const std::vector<ImpactTest>& tests)
 {
     constexpr int n = 200;
-    const double top = cMax*(1 - 1e-9);
+    // (a row counts as above the threshold from c (1 + 1e-9) on: every breaking row does)
+    const double top = cMax*(1 - 1e-6);
     int best = 0;
     double bestValue = -std::numeric_limits<double>::infinity();
     for (int i = 0; i <= n; ++i)
@@ -152,6 +153,22 @@ BreakageFitResult fitVogelPeukert(const std::vector<ImpactTest>& tests)
             "cannot be fitted: test at higher impact velocities"
         );
     }
+    // the breaking rows must span two x W: at one, only fMat (x W - xWmMin) is fixed
+    std::vector<double> breaking;
+    for (const ImpactTest& t : tests)
+    {
+        if (sizeTimesEnergy(t) >= cMax) breaking.push_back(sizeTimesEnergy(t));
+    }
+    std::sort(breaking.begin(), breaking.end());
+    if (breaking.back() - breaking.front() <= 1e-12*breaking.back())
+    {
+        throw std::invalid_argument
+        (
+            "impact tests: particles broke only at x W = " + number(cMax) + " J m/kg (every "
+            "row at or above it has that x W), so fMat and xWmMin are not identifiable: test "
+            "at a higher impact velocity too"
+        );
+    }
     // every particle broke wherever the law lets it: fMat grows without bound
     bool saturated = true;
     for (const ImpactTest& t : tests)
@@ -176,49 +193,65 @@ BreakageFitResult fitVogelPeukert(const std::vector<ImpactTest>& tests)
     r.thresholdAtZero = c == 0.0;
     r.logLikelihood = logLikelihood(f, c, tests);
 
+    // Rows at the threshold (to round-off: the search may stop on a tested x W, a corner
+    // of the likelihood) or below it are certain, P = 0: they take no part in the
+    // curvature, the degrees of freedom or the residuals
+    auto above = [c](const ImpactTest& t) { return sizeTimesEnergy(t) > c*(1 + 1e-9) + 1e-300; };
+
     // Observed information: lambda = f k (u - c) above the threshold, with
-    // dl/dlambda = b/(e^lambda - 1) - (n - b), d2l/dlambda2 = -b e^lambda/(e^lambda - 1)^2
+    // dl/dlambda = b/(e^lambda - 1) - (n - b),
+    // d2l/dlambda2 = -b e^lambda/(e^lambda - 1)^2 = -b e^-lambda/(1 - e^-lambda)^2
     double hff = 0, hfc = 0, hcc = 0;
     for (const ImpactTest& t : tests)
     {
+        if (!above(t)) continue;
         const double a = exponent(1.0, c, t);
-        if (a <= 0) continue;
-        const double k = t.impacts, lambda = f*a, q = std::expm1(lambda);
-        const double d1 = double(t.broken)/q - double(t.tested - t.broken);
-        const double d2 = -double(t.broken)*(q + 1)/(q*q);
+        const double k = t.impacts, lambda = f*a;
+        const double d1 = double(t.broken)/std::expm1(lambda) - double(t.tested - t.broken);
+        const double m = std::expm1(-lambda);
+        const double d2 = -double(t.broken)*std::exp(-lambda)/(m*m);
         hff += d2*a*a;
         hfc += d2*a*(-f*k) + d1*(-k);
         hcc += d2*f*f*k*k;
     }
-    // covariance = (-H)^-1
-    const double det = hff*hcc - hfc*hfc;
-    if (det > 0 && hff < 0)
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    r.fMatError = r.xWmMinError = r.correlation = nan;
+    if (r.thresholdAtZero)
     {
-        r.fMatError = std::sqrt(-hcc/det);
-        r.xWmMinError = std::sqrt(-hff/det);
-        r.correlation = (hfc/det)/(r.fMatError*r.xWmMinError);
+        // at the bound the threshold's score is not zero: fMat's error at xWmMin = 0
+        if (hff < 0) r.fMatError = std::sqrt(-1/hff);
     }
     else
     {
-        r.fMatError = r.xWmMinError = std::numeric_limits<double>::quiet_NaN();
-        r.correlation = std::numeric_limits<double>::quiet_NaN();
+        // covariance = (-H)^-1
+        const double det = hff*hcc - hfc*hfc;
+        if (det > 0 && hff < 0)
+        {
+            r.fMatError = std::sqrt(-hcc/det);
+            r.xWmMinError = std::sqrt(-hff/det);
+            r.correlation = (hfc/det)/(r.fMatError*r.xWmMinError);
+        }
     }
 
-    // The check: deviance, Pearson residuals, by size
+    // The check: deviance, Pearson residuals (1 - P as e^-lambda: P rounds to 1 first)
     std::map<double, SizeResidual> bySize;
+    int informative = 0;
     for (const ImpactTest& t : tests)
     {
-        const double P = breakageProbability(r.material, t);
+        const double lambda = exponent(f, c, t);
+        const double P = -std::expm1(-lambda), Q = std::exp(-lambda);
         const double n = double(t.tested), b = double(t.broken);
         auto term = [](double observed, double expected)
         {
             return observed > 0 ? observed*std::log(observed/expected) : 0.0;
         };
-        r.deviance += 2*(term(b, n*P) + term(n - b, n*(1 - P)));
-        const double var = n*P*(1 - P);
+        r.deviance += 2*(term(b, n*P) + term(n - b, n*Q));
+        const double var = n*P*Q;
         const double residual = var > 0 ? (b - n*P)/std::sqrt(var) : 0.0;
         r.probability.push_back(P);
         r.pearsonResidual.push_back(residual);
+        if (!above(t)) continue;
+        ++informative;
         SizeResidual& s = bySize[t.size];
         s.size = t.size;
         ++s.rows;
@@ -229,10 +262,7 @@ BreakageFitResult fitVogelPeukert(const std::vector<ImpactTest>& tests)
         s.meanResidual /= s.rows;
         r.bySize.push_back(s);
     }
-    // rows below the fitted threshold are certain (P = 0, nothing broken) and test
-    // nothing: the degrees of freedom are the rows above it less the two constants
-    int informative = 0;
-    for (const ImpactTest& t : tests) informative += sizeTimesEnergy(t) > c;
+    // the degrees of freedom: the rows above the threshold less the two constants
     r.degreesOfFreedom = informative - 2;
     r.pValue = r.degreesOfFreedom > 0 ? gsl_cdf_chisq_Q(r.deviance, r.degreesOfFreedom) : 1.0;
     return r;

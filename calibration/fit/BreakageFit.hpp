@@ -33,7 +33,7 @@ struct SizeResidual
 struct BreakageFitResult
 {
     VogelPeukertMaterial material;   // the estimates
-    double fMatError = 0;            // standard errors [kg/(J m)], [J m/kg]
+    double fMatError = 0;            // standard errors [kg/(J m)], [J m/kg] (NaN: none)
     double xWmMinError = 0;
     double correlation = 0;          // of the two estimates
     bool thresholdAtZero = false;    // the likelihood is largest at xWmMin = 0 (a bound)
@@ -43,7 +43,7 @@ struct BreakageFitResult
     double pValue = 1;               // P(chi2_dof > deviance)
     std::vector<double> probability;       // fitted P per row
     std::vector<double> pearsonResidual;   // per row
-    std::vector<SizeResidual> bySize;
+    std::vector<SizeResidual> bySize;      // over the rows above the threshold
 };
 
 //- The breakage probability of a row under material (the law above).
@@ -51,9 +51,11 @@ double breakageProbability(const VogelPeukertMaterial& material, const ImpactTes
 
 //- Fits fMat and xWmMin to the tests. Throws std::invalid_argument, with the reason and
 //  what to test, when the constants cannot be identified: fewer than two distinct x W
-//  (one velocity for one size: fMat and the threshold trade off), nothing broken in any
-//  test (the threshold lies above them all), or every particle broken in every test
-//  (fMat has no upper bound).
+//  (one velocity for one size: fMat and the threshold trade off), breakage at one x W
+//  only, nothing broken in any test (the threshold lies above them all), or every
+//  particle broken in every row at or above the lowest x W that broke any (fMat has no
+//  upper bound). At the bound xWmMin = 0 (thresholdAtZero) xWmMinError and the
+//  correlation are NaN and fMatError is fMat's at xWmMin = 0.
 BreakageFitResult fitVogelPeukert(const std::vector<ImpactTest>& tests);
 
 } // namespace sdf::fit::breakage

@@ -59,16 +59,24 @@ double number(const std::string& word, const std::string& source, int line, cons
     return value;
 }
 
-// A count: a whole number >= minimum
+// A count: a whole number in [minimum, 1e15] (beyond any tester, and exact in a double)
 long count(double value, long minimum, const std::string& source, int line, const std::string& column)
 {
-    if (value != std::floor(value) || value < double(minimum))
+    if (value != std::floor(value) || value < double(minimum) || value > 1e15)
     {
         std::ostringstream msg;
-        msg << "column '" << column << "': " << value << " must be a whole number >= " << minimum;
+        msg << "column '" << column << "': " << value << " must be a whole number >= " << minimum
+            << " (and at most 1e15)";
         refuse(source, line, msg.str());
     }
     return long(value);
+}
+
+bool isNumber(const std::string& word)
+{
+    std::size_t used = 0;
+    try { std::stod(word, &used); } catch (const std::exception&) { return false; }
+    return used == word.size();
 }
 
 } // namespace
@@ -90,6 +98,11 @@ std::vector<ImpactTest> readImpactTests(std::istream& stream, const std::string&
         if (row.empty()) continue;
         if (header.empty())
         {
+            if (std::all_of(row.begin(), row.end(), isNumber))
+            {
+                refuse(source, line, "numbers before a header line naming the columns ("
+                       + joined(impactTestColumns()) + ")");
+            }
             for (const std::string& name : row)
             {
                 const auto& valid = impactTestColumns();
@@ -145,7 +158,9 @@ std::vector<ImpactTest> readImpactTests(std::istream& stream, const std::string&
             t.energy = value("energy");
             if (t.energy < 0) refuse(source, line, "column 'energy': " + row[std::size_t(at("energy"))] + " must be >= 0 [J/kg]");
         }
-        t.impacts = int(count(value("impacts"), 1, source, line, "impacts"));
+        const long impacts = count(value("impacts"), 1, source, line, "impacts");
+        if (impacts > 1000000) refuse(source, line, "column 'impacts': " + std::to_string(impacts) + " impacts per particle: at most 1e6");
+        t.impacts = int(impacts);
         t.tested = count(value("tested"), 1, source, line, "tested");
         t.broken = count(value("broken"), 0, source, line, "broken");
         if (t.broken > t.tested)
@@ -155,7 +170,7 @@ std::vector<ImpactTest> readImpactTests(std::istream& stream, const std::string&
         }
         tests.push_back(t);
     }
-    if (header.empty()) refuse(source, line, "no header line naming the columns (" + joined(impactTestColumns()) + ")");
+    if (header.empty()) refuse(source, std::max(line, 1), "no header line naming the columns (" + joined(impactTestColumns()) + ")");
     if (tests.empty()) refuse(source, line, "no tests after the header");
     return tests;
 }

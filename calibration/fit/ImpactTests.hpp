@@ -31,10 +31,11 @@ struct ImpactTest
 const std::vector<std::string>& impactTestColumns();
 
 //- Reads a table of impact tests from stream, source naming it in messages. Throws
-//  std::invalid_argument naming source, line and column for: no header, an unknown or
-//  repeated column, a missing column, velocity and energy both or neither, a value that
-//  is not a number, a size or number of particles <= 0, a negative velocity or energy,
-//  impacts < 1, broken < 0 or broken > tested, a row of the wrong length, no rows.
+//  std::invalid_argument naming source, line and column for: no header (or numbers
+//  before it), an unknown or repeated column, a missing column, velocity and energy both
+//  or neither, a value that is not a finite number, a size <= 0, tested < 1, a negative
+//  velocity or energy, impacts < 1 (or above 1e6), broken < 0 or broken > tested, a count
+//  above 1e15, a row of the wrong length, no rows.
 std::vector<ImpactTest> readImpactTests(std::istream& stream, const std::string& source);
 
 //- The same from a file (std::invalid_argument when it cannot be opened).
