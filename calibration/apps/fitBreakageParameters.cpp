@@ -2,15 +2,19 @@
 // impact tests (fit/ImpactTests.hpp: the table; fit/BreakageFit.hpp: the maximum-likelihood
 // fit), written as the entries a case's wallImpactCoeffs includes.
 //
-//   fitBreakageParameters TABLE [output=PREFIX]
+//   fitBreakageParameters TABLE [fragments=SIEVING] [output=PREFIX]
 //
-// Writes PREFIX-wallImpactCoeffs (fMat and xWmMin, their standard errors, correlation and
+// With SIEVING (fit/FragmentSieving.hpp: the broken particles' fragments sieved) it also
+// fits Austin's breakage function and writes PREFIX-daughterSizeDistribution (the
+// `austin` daughters, to `#include` inside breakage). Writes PREFIX-wallImpactCoeffs (fMat and xWmMin, their standard errors, correlation and
 // the fit's check as comments; `#include` it inside breakage/wallImpactCoeffs),
 // PREFIX-fit.dat (per test: the observed and fitted fractions broken, the Pearson
 // residual) and PREFIX-fit.png (gnuplot, when installed). PREFIX defaults to TABLE
 // without its extension. Bad input: a message naming the file, line and column, exit
 // status 1, nothing written.
 #include "fit/BreakageFit.hpp"
+#include "fit/ColumnTable.hpp"
+#include "fit/FragmentSieving.hpp"
 #include "fit/ImpactTests.hpp"
 
 #include <cmath>
@@ -23,8 +27,11 @@
 #include <sstream>
 #include <stdexcept>
 #include <string>
+#include <utility>
+#include <vector>
 
 using namespace sdf::fit::breakage;
+using sdf::fit::numberText;
 
 namespace
 {
@@ -32,6 +39,7 @@ namespace
 struct Arguments
 {
     std::string table;
+    std::string fragments;
     std::string prefix;
 };
 
@@ -42,8 +50,9 @@ Arguments parse(int argc, char** argv)
     {
         const std::string arg = argv[i];
         if (arg.rfind("output=", 0) == 0) a.prefix = arg.substr(7);
+        else if (arg.rfind("fragments=", 0) == 0) a.fragments = arg.substr(10);
         else if (a.table.empty() && arg.find('=') == std::string::npos) a.table = arg;
-        else throw std::invalid_argument("unknown argument '" + arg + "' (usage: fitBreakageParameters TABLE [output=PREFIX])");
+        else throw std::invalid_argument("unknown argument '" + arg + "' (usage: fitBreakageParameters TABLE [fragments=SIEVING] [output=PREFIX])");
     }
     if (a.table.empty()) throw std::invalid_argument("no table of impact tests (usage: fitBreakageParameters TABLE [output=PREFIX])");
     if (a.prefix.empty())
@@ -56,13 +65,6 @@ Arguments parse(int argc, char** argv)
     return a;
 }
 
-std::string str(double v)
-{
-    std::ostringstream s;
-    s << std::setprecision(6) << v;
-    return s.str();
-}
-
 std::string entries(const BreakageFitResult& fit, const Arguments& a, std::size_t rows)
 {
     std::ostringstream s;
@@ -73,7 +75,7 @@ std::string entries(const BreakageFitResult& fit, const Arguments& a, std::size_
       << "fMat            " << fit.material.fMat << ";   // [kg/(J m)] +- " << fit.fMatError << "\n"
       << "xWmMin          " << fit.material.xWmMin << ";   // [J m/kg] "
       << (fit.thresholdAtZero ? std::string("at its bound 0 (no standard error)")
-                              : "+- " + str(fit.xWmMinError)) << "\n"
+                              : "+- " + numberText(fit.xWmMinError)) << "\n"
       << "// correlation of the two estimates " << fit.correlation << "; deviance "
       << fit.deviance << " on " << fit.degreesOfFreedom << " degrees of freedom (p "
       << fit.pValue << ")\n";
@@ -89,13 +91,35 @@ int main(int argc, char** argv)
         const Arguments a = parse(argc, argv);
         const auto tests = readImpactTests(a.table);
         const BreakageFitResult fit = fitVogelPeukert(tests);
+        // the fragments before anything is written: bad sieving writes nothing either
+        std::string daughters;
+        std::ostringstream austinSummary;
+        if (!a.fragments.empty())
+        {
+            const AustinFitResult austin = fitAustin(readFragmentSieving(a.fragments));
+            std::ostringstream d;
+            d << std::setprecision(6)
+              << "// Austin's breakage function B = phi (x/y)^gamma + (1 - phi) (x/y)^beta fitted by\n"
+              << "// fitBreakageParameters to " << austin.points << " cumulative fractions of the sieving "
+              << a.fragments << "\n// (least squares; rms " << austin.rms << "; standard errors)\n"
+              << "daughterSizeDistribution\n{\n    model austin;\n    austinCoeffs\n    {\n"
+              << "        phi     " << austin.phi << ";   // +- " << austin.phiError << "\n"
+              << "        gamma   " << austin.gamma << ";   // +- " << austin.gammaError << "\n"
+              << "        beta    " << austin.beta << ";   // +- " << austin.betaError << "\n"
+              << "    }\n}\n";
+            daughters = d.str();
+            austinSummary << "  Austin's daughters from " << a.fragments << ": phi " << austin.phi << " +- "
+                      << austin.phiError << ", gamma " << austin.gamma << " +- " << austin.gammaError
+                      << ", beta " << austin.beta << " +- " << austin.betaError << " (rms "
+                      << austin.rms << " over " << austin.points << " fractions)\n";
+        }
 
         std::cout << "fitBreakageParameters: " << tests.size() << " rows of impact tests from "
                   << a.table << "\n"
                   << "  fMat   " << fit.material.fMat << " +- " << fit.fMatError << " kg/(J m)\n"
                   << "  xWmMin " << fit.material.xWmMin
                   << (fit.thresholdAtZero ? std::string(" J m/kg: the likelihood is largest at the bound 0 (no standard error)")
-                                          : " +- " + str(fit.xWmMinError) + " J m/kg") << "\n"
+                                          : " +- " + numberText(fit.xWmMinError) + " J m/kg") << "\n"
                   << "  correlation " << fit.correlation << "\n"
                   << "  check: deviance " << fit.deviance << " on " << fit.degreesOfFreedom
                   << " degrees of freedom, p " << fit.pValue
@@ -105,7 +129,7 @@ int main(int argc, char** argv)
         {
             std::cout << " " << s.size << " m: " << s.meanResidual << " (" << s.rows << " rows)";
         }
-        std::cout << "\n";
+        std::cout << "\n" << austinSummary.str();
 
         if (!std::isfinite(fit.fMatError))
         {
@@ -126,18 +150,23 @@ int main(int argc, char** argv)
                   << double(t.broken)/double(t.tested) << " " << fit.probability[i] << " "
                   << fit.pearsonResidual[i] << "\n";
         }
-        for (const auto& [path, text] : {std::pair{coeffs, entries(fit, a, tests.size())},
-                                         std::pair{data, table.str()}})
+        const std::string daughterFile = a.prefix + "-daughterSizeDistribution";
+        std::vector<std::pair<std::string, std::string>> files =
+            {{coeffs, entries(fit, a, tests.size())}, {data, table.str()}};
+        if (!daughters.empty()) files.push_back({daughterFile, daughters});
+        for (const auto& [path, text] : files)
         {
             std::ofstream out(path);
             out << text;
             if (!out)
             {
-                std::remove(coeffs.c_str());
+                for (const auto& f : files) std::remove(f.first.c_str());
                 throw std::runtime_error("cannot write " + path);
             }
         }
+
         std::cout << "written " << coeffs << " (include it in breakage/wallImpactCoeffs) and " << data << "\n";
+        if (!daughters.empty()) std::cout << "written " << daughterFile << " (include it in breakage)\n";
 
         // the plot: observed and fitted fractions against x W per impacts
         std::ostringstream gp;

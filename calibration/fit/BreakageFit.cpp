@@ -1,5 +1,7 @@
 #include "BreakageFit.hpp"
 
+#include "ColumnTable.hpp"
+
 #include <gsl/gsl_cdf.h>
 
 #include <algorithm>
@@ -105,13 +107,6 @@ double bestThreshold(double cMax, const std::vector<ImpactTest>& tests)
     return profile(0.0, tests) >= profile(mid, tests) ? 0.0 : mid;
 }
 
-std::string number(double v)
-{
-    std::ostringstream s;
-    s << v;
-    return s.str();
-}
-
 } // namespace
 
 double breakageProbability(const VogelPeukertMaterial& material, const ImpactTest& test)
@@ -139,7 +134,7 @@ BreakageFitResult fitVogelPeukert(const std::vector<ImpactTest>& tests)
         throw std::invalid_argument
         (
             "impact tests: every row has the same size times impact energy x W = "
-            + number(products.front()) + " J m/kg, so fMat and xWmMin are not identifiable "
+            + numberText(products.front()) + " J m/kg, so fMat and xWmMin are not identifiable "
             "(a steeper law with a higher threshold breaks as many): test at two or more "
             "impact velocities"
         );
@@ -149,7 +144,7 @@ BreakageFitResult fitVogelPeukert(const std::vector<ImpactTest>& tests)
         throw std::invalid_argument
         (
             "impact tests: no particle broke in any test, so the threshold xWmMin lies above "
-            "every x W tested (largest " + number(products.back()) + " J m/kg) and fMat "
+            "every x W tested (largest " + numberText(products.back()) + " J m/kg) and fMat "
             "cannot be fitted: test at higher impact velocities"
         );
     }
@@ -164,7 +159,7 @@ BreakageFitResult fitVogelPeukert(const std::vector<ImpactTest>& tests)
     {
         throw std::invalid_argument
         (
-            "impact tests: particles broke only at x W = " + number(cMax) + " J m/kg (every "
+            "impact tests: particles broke only at x W = " + numberText(cMax) + " J m/kg (every "
             "row at or above it has that x W), so fMat and xWmMin are not identifiable: test "
             "at a higher impact velocity too"
         );
@@ -180,7 +175,7 @@ BreakageFitResult fitVogelPeukert(const std::vector<ImpactTest>& tests)
         throw std::invalid_argument
         (
             "impact tests: every particle broke in every test at or above the lowest x W "
-            "that broke any (" + number(cMax) + " J m/kg), so fMat has no upper bound: test "
+            "that broke any (" + numberText(cMax) + " J m/kg), so fMat has no upper bound: test "
             "at lower impact velocities, where some particles survive"
         );
     }

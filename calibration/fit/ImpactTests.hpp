@@ -3,8 +3,8 @@
 // impacts each suffered, how many particles were tested and how many broke. The table
 // fitBreakageParameters fits the Vogel-Peukert constants to (BreakageFit.hpp).
 //
-// The file: '#' starts a comment; the first other line names the columns, whitespace-
-// separated, in any order: size [m], velocity [m/s] or energy [J/kg] (W = v^2/2; one of
+// The file (ColumnTable.hpp's form): '#' starts a comment; the first other line names the
+// columns, whitespace-separated, in any order: size [m], velocity [m/s] or energy [J/kg] (W = v^2/2; one of
 // the two), impacts, tested, broken; every following line gives one test, numbers only.
 #ifndef sdf_fit_ImpactTests_hpp
 #define sdf_fit_ImpactTests_hpp
