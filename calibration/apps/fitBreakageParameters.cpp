@@ -54,7 +54,7 @@ Arguments parse(int argc, char** argv)
         else if (a.table.empty() && arg.find('=') == std::string::npos) a.table = arg;
         else throw std::invalid_argument("unknown argument '" + arg + "' (usage: fitBreakageParameters TABLE [fragments=SIEVING] [output=PREFIX])");
     }
-    if (a.table.empty()) throw std::invalid_argument("no table of impact tests (usage: fitBreakageParameters TABLE [output=PREFIX])");
+    if (a.table.empty()) throw std::invalid_argument("no table of impact tests (usage: fitBreakageParameters TABLE [fragments=SIEVING] [output=PREFIX])");
     if (a.prefix.empty())
     {
         const std::size_t slash = a.table.find_last_of('/');
@@ -136,7 +136,7 @@ int main(int argc, char** argv)
             throw std::runtime_error("the likelihood has no curvature in fMat at its maximum: "
                                      "no standard error, nothing written");
         }
-        // both files composed before either is written: a failure leaves neither
+        // every file composed before any is written: a failure leaves none
         const std::string coeffs = a.prefix + "-wallImpactCoeffs";
         const std::string data = a.prefix + "-fit.dat";
         std::ostringstream table;
