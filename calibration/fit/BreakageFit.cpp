@@ -117,24 +117,24 @@ double breakageProbability(const VogelPeukertMaterial& material, const ImpactTes
 BreakageFitResult fitVogelPeukert(const std::vector<ImpactTest>& tests)
 {
     if (tests.empty()) throw std::invalid_argument("fitVogelPeukert: no impact tests");
-    std::vector<double> products;
+    // x W: the smallest and largest tested, the smallest that broke anything (cMax)
+    double lowest = std::numeric_limits<double>::infinity(), highest = 0;
     double cMax = std::numeric_limits<double>::infinity();
     long broken = 0, survived = 0;
     for (const ImpactTest& t : tests)
     {
-        products.push_back(sizeTimesEnergy(t));
+        lowest = std::min(lowest, sizeTimesEnergy(t));
+        highest = std::max(highest, sizeTimesEnergy(t));
         if (t.broken > 0) cMax = std::min(cMax, sizeTimesEnergy(t));
         broken += t.broken;
         survived += t.tested - t.broken;
     }
-    std::sort(products.begin(), products.end());
-    const bool oneProduct = products.back() - products.front() <= 1e-12*products.back();
-    if (oneProduct)
+    if (highest - lowest <= 1e-12*highest)
     {
         throw std::invalid_argument
         (
             "impact tests: every row has the same size times impact energy x W = "
-            + numberText(products.front()) + " J m/kg, so fMat and xWmMin are not identifiable "
+            + numberText(lowest) + " J m/kg, so fMat and xWmMin are not identifiable "
             "(a steeper law with a higher threshold breaks as many): test at two or more "
             "impact velocities"
         );
@@ -144,18 +144,13 @@ BreakageFitResult fitVogelPeukert(const std::vector<ImpactTest>& tests)
         throw std::invalid_argument
         (
             "impact tests: no particle broke in any test, so the threshold xWmMin lies above "
-            "every x W tested (largest " + numberText(products.back()) + " J m/kg) and fMat "
+            "every x W tested (largest " + numberText(highest) + " J m/kg) and fMat "
             "cannot be fitted: test at higher impact velocities"
         );
     }
-    // the breaking rows must span two x W: at one, only fMat (x W - xWmMin) is fixed
-    std::vector<double> breaking;
-    for (const ImpactTest& t : tests)
-    {
-        if (sizeTimesEnergy(t) >= cMax) breaking.push_back(sizeTimesEnergy(t));
-    }
-    std::sort(breaking.begin(), breaking.end());
-    if (breaking.back() - breaking.front() <= 1e-12*breaking.back())
+    // the breaking rows (x W from cMax to highest) must span two x W: at one, only
+    // fMat (x W - xWmMin) is fixed
+    if (highest - cMax <= 1e-12*highest)
     {
         throw std::invalid_argument
         (

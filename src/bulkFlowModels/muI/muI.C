@@ -92,13 +92,14 @@ Foam::scalar positiveEntry
     return value;
 }
 
-// The bulkFlow dictionary as the model reads it: with `rheology calibrated`
-// in muICoeffs, the entries of the sub-dictionary rheology of
-// constant/granularCoefficients (calibrateGranularMixture, coefficient
-// rheology) added to muICoeffs; with `rheology given` (default) as it is
-// muICoeffs/deposition (a pour deposited where it lands), or nullptr; an
-// entry that is not a dictionary is refused
-const Foam::dictionary* depositionDict(const Foam::dictionary& coeffs)
+// The pour of muICoeffs/deposition (deposited where it lands), or nullptr
+// without one; an entry that is not a dictionary is refused
+Foam::bulkDeposition* newDeposition
+(
+    const Foam::dictionary& coeffs,
+    const Foam::granularMixture& mixture,
+    const Foam::scalar packedFraction
+)
 {
     if (!coeffs.found("deposition"))
     {
@@ -112,9 +113,18 @@ const Foam::dictionary* depositionDict(const Foam::dictionary& coeffs)
             << " ... } start [s]; end [s]; }" << Foam::nl
             << Foam::exit(Foam::FatalIOError);
     }
-    return &coeffs.subDict("deposition");
+    return new Foam::bulkDeposition
+    (
+        coeffs.subDict("deposition"),
+        mixture,
+        packedFraction
+    );
 }
 
+// The bulkFlow dictionary as the model reads it: with `rheology calibrated`
+// in muICoeffs, the entries of the sub-dictionary rheology of
+// constant/granularCoefficients (calibrateGranularMixture, coefficient
+// rheology) added to muICoeffs; with `rheology given` (default) as it is
 Foam::dictionary withCalibratedRheology
 (
     const Foam::dictionary& dict,
@@ -949,12 +959,7 @@ Foam::bulkFlowModels::muI::muI
             coeffs_, "settlingVelocity", dimVelocity, 0
         ).value()
     ),
-    deposition_
-    (
-        depositionDict(coeffs_)
-      ? new bulkDeposition(*depositionDict(coeffs_), mixture, packedFraction_)
-      : nullptr
-    ),
+    deposition_(newDeposition(coeffs_, mixture, packedFraction_)),
     pimple_(const_cast<fvMesh&>(mixture.mesh())),
     alpha_(readField(mixture.mesh(), "alpha.granular"), mixture.mesh()),
     p_rgh_(readField(mixture.mesh(), "p_rgh"), mixture.mesh()),
