@@ -141,42 +141,61 @@ bend_gas()
     sed 's/^\( *object *\)phi;/\1phiGas;/' "$gas/$gasTime/phi" > "$1/phiGas"
 }
 
-# bend_chain DIR UIN E CLASSES...: the chain on the short R/D 3 bend in
+# bend_chain DIR UIN E [CLASSES...]: the chain on the short R/D 3 bend in
 # DIR: the case (the tutorial's, impactEnergy total) in DIR/case, the pass
-# (the tutorial's stage, parcels fired at UIN m/s with restitution E,
-# gravity on, only CLASSES injected) in DIR/pass with the gas velocity
-# DIR/pass/0/U if the caller wrote one (else still air), ready for the
-# solver (bend_solve). DIR/granularProperties and
-# DIR/kinematicCloudProperties, if the caller wrote them, replace the
-# tutorial's. The walls rebound (standardWallInteraction) unless the caller
-# sets bendWall=breakingRebound (and bendFragments=sampled|expected).
+# (the tutorial's stage, parcels fired at UIN m/s with wall restitution E,
+# gravity on) in DIR/pass with the gas velocity DIR/pass/0/U if the caller
+# wrote one (else still air), ready for the solver (bend_solve). The feed
+# and the pass's product come from the tutorial's writeFeed: DIR/feed and
+# DIR/granularProperties, if the caller wrote them, replace the tutorial's
+# system/feed and constant/granularProperties; DIR/kinematicCloudProperties
+# replaces the pass's. The pass injects the feed's classes (writeFeed's
+# injectors, number rates in the feed's proportions) or, if CLASSES are
+# given, those classes at one particle per parcel each (a controlled pass:
+# equal number rates whatever the feed). The walls rebound
+# (standardWallInteraction) unless the caller sets
+# bendWall=breakingRebound (and bendFragments=sampled|expected).
 # The mesh is built once per test run and copied.
 bend_chain()
 {
     local dir="$1" Uin="$2" e="$3" tut="$projectDir/tutorials/pipeBend" c d
     shift 3
     mkdir -p "$dir/pass" "$dir/case"
-    cp -r "$tut/system" "$tut/constant" "$tut/0.orig" "$dir/case/"
-    # A test's own species (and models) instead of the tutorial's
+    cp -r "$tut/system" "$tut/constant" "$dir/case/"
+    # A test's own species (and models) and feed instead of the tutorial's
     [ -f "$dir/granularProperties" ] && cp "$dir/granularProperties" "$dir/case/constant/"
+    [ -f "$dir/feed" ] && cp "$dir/feed" "$dir/case/system/"
+    # The wall's restitution (wallContact's e; sed, not foamDictionary -set,
+    # which would drop the #includeIfPresent of bendParameters, absent yet)
+    sed -i "s/^\( *e  *\)[^;]*;/\1$e;/" "$dir/case/constant/granularProperties"
+    [ "$(foamDictionary -entry wallContact/e -value "$dir/case/constant/granularProperties")" = "$e" ] \
+        || { echo "bend_chain: wallContact/e not set to $e"; return 1; }
     bend_chain_mesh "$dir/case" || return 1
     echo "impactEnergy total;" > "$dir/case/constant/bendParameters"
     cp -r "$tut/particlePass/system" "$tut/particlePass/constant" "$dir/pass/"
     [ -f "$dir/kinematicCloudProperties" ] && cp "$dir/kinematicCloudProperties" "$dir/pass/constant/"
     cp -r "$dir/case/constant/polyMesh" "$dir/case/constant/granularProperties" \
         "$dir/case/constant/bendParameters" "$dir/pass/constant/"
+    cp "$dir/case/system/feed" "$dir/pass/system/"
     mkdir -p "$dir/pass/0"
     [ -f "$dir/pass/0/U" ] || cp "$projectDir/tests/solver/pipeBend/ballistic/0/U" "$dir/pass/0/U"
-    : > "$dir/pass/constant/injectionModels"
-    for c in "$@"
-    do
-        d=$(foamDictionary -entry "species/$c/d" -value "$dir/case/constant/granularProperties") || return 1
-        cat >> "$dir/pass/constant/injectionModels" <<INJ
+    # The case's 0/n.<class> and the pass's 0/n.<class> (breakingRebound
+    # builds the case's mixture from them), product and injectors
+    "$tut/writeFeed" -case "$dir/case" -pass "$dir/pass" > "$dir/log.writeFeed" 2>&1 \
+        || { cat "$dir/log.writeFeed"; return 1; }
+    if [ "$#" -gt 0 ]
+    then
+        : > "$dir/pass/constant/injectionModels"
+        for c in "$@"
+        do
+            d=$(foamDictionary -entry "species/$c/d" -value "$dir/case/constant/granularProperties") || return 1
+            cat >> "$dir/pass/constant/injectionModels" <<INJ
 $c { type patchInjection; patch inlet; SOI 0; duration 1; parcelsPerSecond \$parcelsPerSecond;
   U0 (\$Uin 0 0); flowRateProfile constant 1; massTotal 0; parcelBasisType fixed; nParticle 1;
   sizeDistribution { type fixedValue; fixedValueDistribution { value $d; } } }
 INJ
-    done
+        done
+    fi
     # Recording from 0.025 s (bendRecordFrom), when the first particles
     # (20 m/s) have crossed the 0.39 m bend, to 0.05 s (bendPassEnd): the
     # pass is steady, so its crossings balance
@@ -186,15 +205,10 @@ INJ
     foamDictionary -entry recordFrom -set "$recordFrom" "$dir/pass/constant/passParameters" > /dev/null
     foamDictionary -entry parcelsPerSecond -set 20000 "$dir/pass/constant/passParameters" > /dev/null
     foamDictionary -entry Uin -set "$Uin" "$dir/pass/constant/passParameters" > /dev/null
-    foamDictionary -entry e -set "$e" "$dir/pass/constant/passParameters" > /dev/null
     foamDictionary -entry wallInteraction -set "${bendWall:-standardWallInteraction}" "$dir/pass/constant/passParameters" > /dev/null
     foamDictionary -entry fragments -set "${bendFragments:-sampled}" "$dir/pass/constant/passParameters" > /dev/null
-    # breakingRebound builds the case's mixture: it reads 0/n.<species>
-    cp "$dir/case/0.orig"/n.* "$dir/pass/0/"
-    cp "$dir/case/system/feed" "$dir/pass/system/"
     icoUncoupledKinematicParcelFoam -case "$dir/pass" > "$dir/log.pass" 2>&1 || { tail -30 "$dir/log.pass"; return 1; }
     # The solver's case
-    cp -r "$dir/case/0.orig" "$dir/case/0"
     cp "$dir/pass/$passEnd"/alphaPass.* "$dir/pass/$passEnd"/UPass.* "$dir/pass/$passEnd"/phiPass.* "$dir/case/0/"
     mkdir -p "$dir/case/constant/particlePass"
     cp "$dir/pass/postProcessing/lagrangian/kinematicCloud/particlePass/$passEnd"/impacts.* "$dir/case/constant/particlePass/"
@@ -457,6 +471,9 @@ test_pipe_bend_tiny_particles()
     mkdir -p "$dir/pass/0"
     sed -e '/d1mm\|d500um\|d250um/d' -e 's/^\( *\)d2mm .*/&\n\1d5um    { d 5e-6;   rho 1590; }/' \
         "$tut/constant/granularProperties" > "$dir/granularProperties"
+    # The continuum's feed: both classes (the pass below fires them at
+    # equal number rates all the same)
+    printf 'loading 1;\ngasDensity 1.2;\nmassFractions { d2mm 0.88; d5um 0.12; }\n' > "$dir/feed"
     bend_gas "$dir" || return 1
     bend_chain "$dir" 20 0.8 d5um d2mm || return 1
     python3 - "$dir" <<'PY' || return 1
@@ -497,8 +514,6 @@ sys.exit(0 if touched < 0.1 and speed < 0.2 and tiny < 0.15 and tiny < large / 3
 PY
     # The solver, d5um with the gas flux
     cp "$dir/phiGas" "$dir/case/0/phiGas"
-    sed 's/\bd2mm\b/d5um/g' "$dir/case/0/n.d2mm" > "$dir/case/0/n.d5um"
-    printf 'd2mm 7.5e-4;\nd5um 1e-4;\n' > "$dir/case/system/feed"
     cp -r "$dir/case" "$dir/refused"
     foamDictionary -entry bulkFlow/particlePassCoeffs -add "{ gasVelocity (d5um); gasViscosity 1.8e-5; pipeDiameter 0.05; }" \
         "$dir/case/constant/granularProperties" > /dev/null
@@ -524,4 +539,92 @@ PY
     segregationDegradationFoam -case "$dir/refused" > "$dir/log.missing" 2>&1 && { echo "missing pipeDiameter accepted"; return 1; }
     grep -q "pipeDiameter" "$dir/log.missing" || { tail -20 "$dir/log.missing"; return 1; }
     [ -z "$(foamListTimes -case "$dir/refused" 2>/dev/null)" ] || { echo "refused run wrote a time directory"; return 1; }
+}
+
+# A fed size distribution through the short bend in its 20 m/s gas
+# (bend_gas; walls breakingRebound with fragments expected, impactEnergy
+# total): the pass injects the feed's classes through the tutorial's
+# writeFeed (number rates in the feed's proportions). Particles of the pass
+# do not collide, so the pass, and the continuum on it, are linear in the
+# feed: each class's gain at the outlet per fed mass for 60 % d2mm + 40 %
+# d1mm by mass equals 0.6 times that of d2mm fed alone plus 0.4 times that
+# of d1mm fed alone, within the passes' own noise: 4 standard errors of the
+# difference, each pass's error from batch means of its breakage counters
+# over 10 windows (the fragments born less the volume broken, per class).
+# Each run bounded and balanced (bend_solve)
+test_pipe_bend_fed_distribution()
+{
+    local root="$workRoot/pipeBendFedDistribution" run
+    rm -rf "$root"
+    for run in mix:"d2mm 0.6; d1mm 0.4;" d2mm:"d2mm 1;" d1mm:"d1mm 1;"
+    do
+        local dir="$root/${run%%:*}"
+        mkdir -p "$dir"
+        printf 'loading 1;\ngasDensity 1.2;\nmassFractions { %s }\n' "${run#*:}" > "$dir/feed"
+        bend_gas "$dir" || return 1
+        bendWall=breakingRebound bendFragments=expected bendRecordFrom=0.045 bendPassEnd=0.07 \
+            bend_chain "$dir" 20 0.8 || return 1
+        foamDictionary -entry endTime -set 0.06 "$dir/case/system/controlDict" > /dev/null
+        bend_solve "$dir" > "$dir/solve.txt" || { cat "$dir/solve.txt"; return 1; }
+    done
+    python3 - "$root" <<'PY'
+import math, re, statistics, sys
+root = sys.argv[1]
+K = 10
+
+
+def gains(name):
+    """Per class: the continuum's gain at the outlet per fed mass (the last
+    rows of outletComposition), and the pass's gain per fed volume with
+    its batch-means standard error."""
+    d = root + "/" + name
+    def last(patch):
+        header, row = None, None
+        for line in open(d + "/case/postProcessing/outletComposition/0/" + patch + ".dat"):
+            if line.startswith("# time"):
+                header = line[1:].split()
+            elif line.strip() and not line.startswith("#"):
+                row = dict(zip(header, map(float, line.split())))
+        return row
+    inlet, outlet = last("inlet"), last("outlet")
+    classes = [k[9:-6] for k in outlet if k.startswith("massFlow.")]
+    fed = {c: 0.0 - inlet["massFlow.%s[kg/s]" % c] for c in classes}
+    total = sum(fed.values())
+    continuum = {c: (outlet["massFlow.%s[kg/s]" % c] - fed[c]) / total for c in classes}
+    # The pass's fed volume rate: every injector's parcels times particles
+    injectors = open(d + "/pass/constant/injectionModels").read()
+    fedPass = 0.0
+    for m in re.finditer(r"nParticle\s+(\S+);\s*sizeDistribution\s*\{[^}]*value\s+(\S+);", injectors):
+        fedPass += 20000 * float(m.group(1)) * math.pi / 6 * float(m.group(2)) ** 3
+    # The cumulative counters at every step of the window
+    log = open(d + "/log.pass").read()
+    blocks = re.findall(r"breakingRebound \(fragments expected\) from t = \S+ s over (\S+) s:[^\n]*\n((?:\s+\S+ \S+ \S+ \S+ \S+\n)+)", log)
+    series = [(float(T), {l.split()[0]: (float(l.split()[3]), float(l.split()[4]))
+                          for l in body.strip().splitlines()}) for T, body in blocks]
+    T = series[-1][0]
+    marks = [min(series, key=lambda s: abs(s[0] - T * k / K)) for k in range(K + 1)]
+    passGain, passError = {}, {}
+    for c in classes:
+        net = lambda s: s[1][c][1] - s[1][c][0]
+        rates = [(net(b) - net(a)) / (b[0] - a[0]) / fedPass for a, b in zip(marks[:-1], marks[1:])]
+        passGain[c] = (net(series[-1]) - net(marks[0])) / T / fedPass
+        passError[c] = statistics.stdev(rates) / math.sqrt(K)
+    return classes, continuum, passGain, passError
+
+
+classes, mix, mixPass, mixError = gains("mix")
+_, single2, pass2, error2 = gains("d2mm")
+_, single1, pass1, error1 = gains("d1mm")
+ok = mix["d2mm"] < 0 and mix["d250um"] > 0
+for c in classes:
+    expected = 0.6 * single2[c] + 0.4 * single1[c]
+    # The continuum's gain carries its pass's noise; relative to the pass's
+    # own gain where that is not zero
+    sigma = math.sqrt(mixError[c] ** 2 + (0.6 * error2[c]) ** 2 + (0.4 * error1[c]) ** 2)
+    z = (mix[c] - expected) / sigma if sigma > 0 else float("inf")
+    print("%-7s gain per fed mass: mix %+.5e, 0.6 d2mm + 0.4 d1mm %+.5e, difference %+.2e = %+.2f sigma"
+          " (sigma %.2e from the passes' batch means)" % (c, mix[c], expected, mix[c] - expected, z, sigma))
+    ok = ok and abs(z) <= 4
+sys.exit(0 if ok else 1)
+PY
 }

@@ -275,7 +275,7 @@ bool Foam::BreakingRebound<CloudType>::correct
     bool brokenWhole = false;
     if (Un > 0)
     {
-        const label j = parcelSpecies(species_, p.d());
+        const label j = parcelSpecies(species_, p.d(), p.rho());
         if (counting)
         {
             impacts_[j] += p.nParticle();

@@ -20,9 +20,9 @@
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
 template<class CloudType>
-Foam::label Foam::ParticlePass<CloudType>::speciesOf(const scalar d) const
+Foam::label Foam::ParticlePass<CloudType>::speciesOf(const parcelType& p) const
 {
-    return parcelSpecies(species_, d);
+    return parcelSpecies(species_, p.d(), p.rho());
 }
 
 
@@ -676,7 +676,7 @@ void Foam::ParticlePass<CloudType>::postMove
     }
     // The sub-step ended on a face or inside the cell: either way it was
     // spent in p.cell() (hitFace, which changes the cell, comes after)
-    const label j = speciesOf(p.d());
+    const label j = speciesOf(p);
     const scalar w = p.nParticle()*p.volume()*dt;
     residence_[j][p.cell()] += w;
     momentumResidence_[j][p.cell()] += w*p.U();
@@ -711,7 +711,7 @@ void Foam::ParticlePass<CloudType>::postFace
             return;
         }
     }
-    const label j = speciesOf(p.d());
+    const label j = speciesOf(p);
     crossed_[j][facei] += sign*p.nParticle()*p.volume();
 }
 
@@ -734,7 +734,7 @@ void Foam::ParticlePass<CloudType>::postPatch
     const vector U(p.U() - Up);
     const scalar Un = U & nw;
     const scalar Ut = mag(U - Un*nw);
-    const label j = speciesOf(p.d());
+    const label j = speciesOf(p);
     const impactRecord r{p.face(), p.nParticle(), Un, Ut};
     if (!(Un > 0))
     {
