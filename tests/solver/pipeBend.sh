@@ -567,9 +567,11 @@ test_pipe_bend_fed_distribution()
         foamDictionary -entry endTime -set 0.06 "$dir/case/system/controlDict" > /dev/null
         bend_solve "$dir" > "$dir/solve.txt" || { cat "$dir/solve.txt"; return 1; }
     done
-    python3 - "$root" <<'PY'
-import math, re, statistics, sys
+    python3 - "$root" "$projectDir/tests/solver/pipeBend" <<'PY'
+import math, re, sys
 root = sys.argv[1]
+sys.path.insert(0, sys.argv[2])
+import passCounters
 K = 10
 
 
@@ -596,19 +598,11 @@ def gains(name):
     fedPass = 0.0
     for m in re.finditer(r"nParticle\s+(\S+);\s*sizeDistribution\s*\{[^}]*value\s+(\S+);", injectors):
         fedPass += 20000 * float(m.group(1)) * math.pi / 6 * float(m.group(2)) ** 3
-    # The cumulative counters at every step of the window
-    log = open(d + "/log.pass").read()
-    blocks = re.findall(r"breakingRebound \(fragments expected\) from t = \S+ s over (\S+) s:[^\n]*\n((?:\s+\S+ \S+ \S+ \S+ \S+\n)+)", log)
-    series = [(float(T), {l.split()[0]: (float(l.split()[3]), float(l.split()[4]))
-                          for l in body.strip().splitlines()}) for T, body in blocks]
-    T = series[-1][0]
-    marks = [min(series, key=lambda s: abs(s[0] - T * k / K)) for k in range(K + 1)]
+    # The pass's gain per fed volume and its batch-means error
     passGain, passError = {}, {}
     for c in classes:
-        net = lambda s: s[1][c][1] - s[1][c][0]
-        rates = [(net(b) - net(a)) / (b[0] - a[0]) / fedPass for a, b in zip(marks[:-1], marks[1:])]
-        passGain[c] = (net(series[-1]) - net(marks[0])) / T / fedPass
-        passError[c] = statistics.stdev(rates) / math.sqrt(K)
+        g, e = passCounters.rate(d + "/log.pass", lambda x: x[c][3] - x[c][2], K)
+        passGain[c], passError[c] = g / fedPass, e / fedPass
     return classes, continuum, passGain, passError
 
 
@@ -618,13 +612,295 @@ _, single1, pass1, error1 = gains("d1mm")
 ok = mix["d2mm"] < 0 and mix["d250um"] > 0
 for c in classes:
     expected = 0.6 * single2[c] + 0.4 * single1[c]
-    # The continuum's gain carries its pass's noise; relative to the pass's
-    # own gain where that is not zero
+    # The continuum's gain carries its pass's noise
     sigma = math.sqrt(mixError[c] ** 2 + (0.6 * error2[c]) ** 2 + (0.4 * error1[c]) ** 2)
     z = (mix[c] - expected) / sigma if sigma > 0 else float("inf")
     print("%-7s gain per fed mass: mix %+.5e, 0.6 d2mm + 0.4 d1mm %+.5e, difference %+.2e = %+.2f sigma"
           " (sigma %.2e from the passes' batch means)" % (c, mix[c], expected, mix[c] - expected, z, sigma))
     ok = ok and abs(z) <= 4
+sys.exit(0 if ok else 1)
+PY
+}
+
+# Another product through the tutorial, changed only in its dictionaries
+# and the geometry's options (Allrun -D): three classes d3mm, d1500um,
+# d750um of density 1100 kg/m3, wall restitution 0.7 and friction 0.2, fed
+# 70/30 by mass at loading 0.5 through a 100 mm line (coarse mesh, 25 m/s).
+#   - the run completes; results/productDistribution.dat lists exactly the
+#     three classes and dust, the fed mass fractions 0.7, 0.3, 0 and the
+#     fed mass flow loading rhoGas U A of the snapped inlet's area A (its
+#     faces' areas, from the mesh), both to 1e-3: each class crosses the
+#     inlet with its own pass velocity, within 2e-4 of the gas's there
+#   - the pass carried that product (its product file: rho0 1100, e 0.7,
+#     mu 0.2) and the mesh is 100 mm across (checkMesh's bounding box)
+#   - the solids balance per run to 1e-10 (tests/solver/pipeBend/balance.py)
+# Refused before anything runs, with the file and entry named and no stage
+# made: classes of two densities, a feed naming a class that is not a
+# species, feed fractions not summing to 1, particlePassCoeffs pipeDiameter
+# other than -D; and a pass whose kinematicCloudProperties hard-codes
+# another rho0 than granularProperties stops at its first parcel naming both
+test_pipe_bend_another_product()
+{
+    local dir="$workRoot/pipeBendAnotherProduct" case
+    rm -rf "$dir"; mkdir -p "$dir"
+    cp -r "$projectDir/tutorials/pipeBend" "$dir/tutorial"
+    case="$dir/tutorial"
+    "$case/Allclean" > /dev/null 2>&1
+    python3 - "$case" <<'PY'
+import re, sys
+case = sys.argv[1]
+path = case + "/constant/granularProperties"
+text = open(path).read()
+text = re.sub(r"species\s*\{.*?\n\}", "species\n{\n    d3mm    { d 3e-3;   rho 1100; }\n"
+              "    d1500um { d 1.5e-3; rho 1100; }\n    d750um  { d 7.5e-4; rho 1100; }\n}",
+              text, count=1, flags=re.S)
+text = re.sub(r"wallContact\s*\{.*?\}", "wallContact { e 0.7; mu 0.2; }", text, count=1, flags=re.S)
+open(path, "w").write(text)
+path = case + "/system/feed"
+text = open(path).read()
+text = re.sub(r"massFractions\s*\{.*?\}", "massFractions { d3mm 0.7; d1500um 0.3; }", text, flags=re.S)
+text = re.sub(r"loading\s+\S+;", "loading 0.5;", text)
+open(path, "w").write(text)
+PY
+    cp -r "$case" "$dir/pristine"
+    "$case/Allrun" -D 0.1 -mesh coarse -velocity 25 > "$dir/log.Allrun" 2>&1 \
+        || { tail -n 30 "$dir/log.Allrun"; return 1; }
+    python3 "$projectDir/tests/solver/pipeBend/balance.py" "$case/log.segregationDegradationFoam" \
+        "$case/postProcessing/outletComposition/0/" "$case/constant/granularProperties" || return 1
+    grep -q "Mesh OK" "$case/log.checkMesh" || return 1
+    python3 - "$case" <<'PY' || return 1
+import math, re, sys
+case = sys.argv[1]
+rows = [l.split() for l in open(case + "/results/productDistribution.dat") if not l.startswith("#")]
+names = [r[0] for r in rows]
+fed = {r[0]: float(r[2]) for r in rows}
+fraction = {r[0]: float(r[4]) for r in rows}
+# The snapped inlet's area from the mesh: the sdfoam reader's faces and points
+from sdfoam import foamcase
+mesh = case + "/constant/polyMesh"
+boundary = foamcase._body(mesh + "/boundary")
+m = re.search(r"\binlet\s*\{[^}]*nFaces\s+(\d+);[^}]*startFace\s+(\d+);", boundary)
+nFaces, start = int(m.group(1)), int(m.group(2))
+points = [tuple(map(float, p.split())) for p in re.findall(r"\(([-0-9.eE+]+ [-0-9.eE+]+ [-0-9.eE+]+)\)", foamcase._body(mesh + "/points"))]
+faces = re.findall(r"\d+\(([\d ]+)\)", foamcase._body(mesh + "/faces"))[start:start + nFaces]
+area = 0.0
+for f in faces:
+    p = [points[int(i)] for i in f.split()]
+    # the inlet is the plane x = const: the polygon's area in y-z
+    area += 0.5 * abs(sum(p[i][1] * p[(i + 1) % len(p)][2] - p[(i + 1) % len(p)][1] * p[i][2] for i in range(len(p))))
+expected = 0.5 * 1.2 * 25 * area
+total = sum(fed.values())
+box = re.search(r"Overall domain bounding box \(([^)]*)\) \(([^)]*)\)", open(case + "/log.checkMesh").read())
+lo, hi = [list(map(float, b.split())) for b in box.groups()]
+product = dict(re.findall(r"^(\w+)\s+(\S+);", open(case + "/stages/pass/constant/product").read(), re.M))
+print("classes %s; fed fractions %s; fed %.6e kg/s against loading rhoGas U A = %.6e (A %.5e m2, pi D^2/4 %.5e);"
+      " mesh across z %.4f m; pass product %s" % (names, fraction, total, expected, area, math.pi * 0.01 / 4, hi[2] - lo[2], product))
+ok = (names == ["d3mm", "d1500um", "d750um", "dust"]
+      and abs(fraction["d3mm"] - 0.7) < 1e-3 and abs(fraction["d1500um"] - 0.3) < 1e-3 and fraction["d750um"] == 0
+      and abs(total / expected - 1) < 1e-3
+      and abs(hi[2] - lo[2] - 0.1) < 1e-4
+      and float(product["rho0"]) == 1100 and float(product["e"]) == 0.7 and float(product["mu"]) == 0.2
+      and float(rows[names.index("d750um")][3]) > 0)
+sys.exit(0 if ok else 1)
+PY
+    # Refusals, each on a fresh copy: the message, and no stage made
+    refused()
+    {
+        local name="$1" pattern="$2"; shift 2
+        rm -rf "$dir/$name"; cp -r "$dir/pristine" "$dir/$name"
+        python3 - "$dir/$name" <<PY
+import re, sys
+case = sys.argv[1]
+$(cat)
+PY
+        if "$dir/$name/Allrun" "$@" > "$dir/log.$name" 2>&1
+        then
+            echo "$name: accepted"; return 1
+        fi
+        grep -q -- "$pattern" "$dir/log.$name" || { cat "$dir/log.$name"; echo "$name: no message matching '$pattern'"; return 1; }
+        [ ! -d "$dir/$name/stages" ] || { echo "$name: a stage was made"; return 1; }
+        grep -m1 -- "$pattern" "$dir/log.$name"
+    }
+    refused twoDensities "granularProperties: the classes' densities differ (d3mm 1100, d1500um 1100, d750um 1500)" -D 0.1 <<'PY' || return 1
+p = case + "/constant/granularProperties"
+text = open(p).read()
+open(p, "w").write(text.replace("d 7.5e-4; rho 1100;", "d 7.5e-4; rho 1500;"))
+PY
+    refused unknownClass "massFractions names d2mm, which is not a species of .*granularProperties (species: d3mm d1500um d750um)" -D 0.1 <<'PY' || return 1
+p = case + "/system/feed"
+text = open(p).read()
+open(p, "w").write(re.sub(r"massFractions\s*\{.*?\}", "massFractions { d3mm 0.7; d2mm 0.3; }", text, flags=re.S))
+PY
+    refused fractionSum "system/feed: massFractions sum to 0.9, not 1" -D 0.1 <<'PY' || return 1
+p = case + "/system/feed"
+text = open(p).read()
+open(p, "w").write(re.sub(r"massFractions\s*\{.*?\}", "massFractions { d3mm 0.6; d1500um 0.3; }", text, flags=re.S))
+PY
+    refused pipeDiameter "particlePassCoeffs/pipeDiameter 0.05 differs from the line's diameter (Allrun -D 0.1" -D 0.1 <<'PY' || return 1
+p = case + "/constant/granularProperties"
+text = open(p).read()
+open(p, "w").write(text.replace("model       particlePass;", "model       particlePass;\n    particlePassCoeffs { pipeDiameter 0.05; }"))
+PY
+    # A pass whose cloud density is hard-coded apart from the product's
+    mkdir -p "$dir/handDensity"
+    sed 's/^\( *rho0 *\)\$rho0;/\11590;/' "$projectDir/tutorials/pipeBend/particlePass/constant/kinematicCloudProperties" \
+        > "$dir/handDensity/kinematicCloudProperties"
+    grep -q "rho0 *1590;" "$dir/handDensity/kinematicCloudProperties" || { echo "handDensity: rho0 not replaced"; return 1; }
+    cp "$case/constant/granularProperties" "$dir/handDensity/"
+    printf 'loading 1;\ngasDensity 1.2;\nmassFractions { d3mm 1; }\n' > "$dir/handDensity/feed"
+    if bend_chain "$dir/handDensity" 20 0.8 > "$dir/log.handDensity" 2>&1
+    then
+        echo "handDensity: the pass ran with rho0 1590 for a product of 1100 kg/m3"; return 1
+    fi
+    grep -q "A parcel of species d3mm has density 1590 kg/m3 (kinematicCloudProperties constantProperties rho0) where constant/granularProperties gives 1100 kg/m3" \
+        "$dir/handDensity/log.pass" || { tail -20 "$dir/handDensity/log.pass"; return 1; }
+    grep -m1 "A parcel of species" "$dir/handDensity/log.pass"
+}
+
+# A line through the tutorial's Allrun (coarse mesh, 30 m/s): three bends
+# joined by straights of half a diameter (the extreme of a very short
+# straight), legs of 2 D, on 2 MPI ranks (-parallel), and one bend with
+# the same legs and inlet conditions.
+#   - both meshes "Mesh OK"; the line's solids balance to 1e-10
+#     (balance.py), on 2 ranks and run again serial
+#   - the flows through each bend's exit (outletComposition faceZones):
+#     the total at every exit equals the inlet's less the dust made per
+#     unit time, to 1e-6 of the inflow (the zones cover the section and
+#     are oriented along the flow)
+#   - 2 MPI ranks = serial: every class's flow through every exit and the
+#     outlet at the last time, to 1e-8 relative, with the tutorial's
+#     decomposition and with one that puts the ranks' boundary exactly on
+#     the first bend's exit (every face of exit1 a processor face)
+#   - the first bend breaks the same fraction of the fed class in the
+#     line as alone, within 4 standard errors of the difference, each from
+#     batch means of its pass's broken volume (the line's over all its
+#     bends, which overstates the first bend's: conservative)
+test_pipe_bend_line()
+{
+    local root="$workRoot/pipeBendLine" name
+    rm -rf "$root"; mkdir -p "$root"
+    for name in line single
+    do
+        cp -r "$projectDir/tutorials/pipeBend" "$root/$name"
+        "$root/$name/Allclean" > /dev/null 2>&1
+    done
+    "$root/line/Allrun" -mesh coarse -velocity 30 -bends 3 -straight 0.5 -upstream 2 -downstream 2 -parallel \
+        > "$root/log.line" 2>&1 || { tail -n 30 "$root/log.line"; return 1; }
+    "$root/single/Allrun" -mesh coarse -velocity 30 -bends 1 -upstream 2 -downstream 2 \
+        > "$root/log.single" 2>&1 || { tail -n 30 "$root/log.single"; return 1; }
+    for name in line single
+    do
+        grep -q "Mesh OK" "$root/$name/log.checkMesh" || { echo "$name: mesh not OK"; return 1; }
+    done
+    # The same case again, serial
+    mkdir -p "$root/serial"
+    cp -r "$root/line/0" "$root/line/constant" "$root/line/system" "$root/serial/"
+    segregationDegradationFoam -case "$root/serial" > "$root/serial/log.segregationDegradationFoam" 2>&1 \
+        || { tail -30 "$root/serial/log.segregationDegradationFoam"; return 1; }
+    # And on 2 ranks split exactly at the first bend's exit: the cells on
+    # either side of its plane on different ranks (decomposePar manual), so
+    # every face of exit1 is a processor face
+    mkdir -p "$root/split"
+    cp -r "$root/line/0" "$root/line/constant" "$root/line/system" "$root/split/"
+    python3 - "$root/split" <<'PY' || return 1
+import re, sys
+from sdfoam import foamcase
+case = sys.argv[1]
+geometry = open(case + "/system/bendGeometry").read()
+text = re.search(r"^bendExits\s+\((.*)\);", geometry, re.M).group(1)
+v = [tuple(map(float, t.split())) for t in re.findall(r"\(([^()]+)\)", text)]
+c, t = v[0], v[1]
+ranks = [1 if sum((x[i] - c[i]) * t[i] for i in range(3)) > 0 else 0 for x in foamcase.cellCentres(case)]
+with open(case + "/constant/cellDecomposition", "w") as f:
+    f.write("FoamFile { version 2.0; format ascii; class labelList; object cellDecomposition; }\n%d\n(\n%s\n)\n"
+            % (len(ranks), "\n".join(map(str, ranks))))
+with open(case + "/system/decomposeParDict", "w") as f:
+    f.write("FoamFile { version 2.0; format ascii; class dictionary; object decomposeParDict; }\n"
+            "numberOfSubdomains 2;\nmethod manual;\nmanualCoeffs { dataFile \"cellDecomposition\"; }\n")
+print("split at exit1: %d and %d cells" % (ranks.count(0), ranks.count(1)))
+PY
+    decomposePar -case "$root/split" > "$root/split/log.decomposePar" 2>&1 || { tail -20 "$root/split/log.decomposePar"; return 1; }
+    python3 - "$root/split" <<'PY' || return 1
+import re, sys
+# every exit1 face on a processor patch: the zone holds no internal face of either rank
+for p in ("processor0", "processor1"):
+    owner = open(sys.argv[1] + "/%s/constant/polyMesh/owner" % p).read()
+    nInternal = int(re.search(r"nInternalFaces:\s*(\d+)", owner).group(1))
+    zones = open(sys.argv[1] + "/%s/constant/polyMesh/faceZones" % p).read()
+    m = re.search(r"exit1\s*\{[^}]*?faceLabels\s*List<label>\s*(?:(\d+)\s*\(([^)]*)\)|(\d+)\{(\d+)\})", zones, re.S)
+    faces = list(map(int, m.group(2).split())) if m.group(2) is not None else [int(m.group(4))] * int(m.group(3))
+    inside = [f for f in faces if f < nInternal]
+    print("%s: exit1 has %d faces, %d of them internal" % (p, len(faces), len(inside)))
+    if not faces or inside:
+        sys.exit(1)
+PY
+    mpirun -np 2 segregationDegradationFoam -parallel -case "$root/split" > "$root/split/log.segregationDegradationFoam" 2>&1 \
+        || { tail -30 "$root/split/log.segregationDegradationFoam"; return 1; }
+    local log
+    for log in "$root/line/log.segregationDegradationFoam" "$root/serial/log.segregationDegradationFoam"
+    do
+        python3 "$projectDir/tests/solver/pipeBend/balance.py" "$log" \
+            "${log%/log.*}/postProcessing/outletComposition/0/" "$root/line/constant/granularProperties" || return 1
+    done
+    python3 - "$root" "$projectDir/tests/solver/pipeBend" <<'PY'
+import math, sys
+root = sys.argv[1]
+sys.path.insert(0, sys.argv[2])
+import passCounters
+
+
+def last(case, station):
+    header, row = None, None
+    for line in open(case + "/postProcessing/outletComposition/0/" + station + ".dat"):
+        if line.startswith("# time"):
+            header = line[1:].split()
+        elif line.strip() and not line.startswith("#"):
+            row = dict(zip(header, map(float, line.split())))
+    return {k[9:-6]: v for k, v in row.items() if k.startswith("massFlow.")}
+
+
+def dustRate(case):
+    rows = [l.split() for l in open(case + "/results/productDistribution.dat") if l.startswith("dust")]
+    return float(rows[0][3])
+
+
+ok = True
+line, serial = root + "/line", root + "/serial"
+inlet = -sum(last(line, "inlet").values())
+dust = dustRate(line)
+for k in (1, 2, 3):
+    total = sum(last(line, "exit%d" % k).values())
+    error = abs(total - inlet) - dust
+    print("exit%d: total %.9e kg/s, inlet %.9e, dust %.2e: off by %.2e of the inflow beyond the dust"
+          % (k, total, inlet, dust, error / inlet))
+    ok = ok and error <= 1e-6 * inlet
+for other, what in ((line, "2 ranks (simple)"), (root + "/split", "2 ranks split at exit1")):
+    worst = 0.0
+    for station in ("exit1", "exit2", "exit3", "outlet"):
+        p, s = last(other, station), last(serial, station)
+        for c in p:
+            worst = max(worst, abs(p[c] - s[c]) / abs(s[c]) if abs(s[c]) > 1e-20 else abs(p[c]))
+    print("%s against serial: every class through every exit and the outlet to %.2e" % (what, worst))
+    ok = ok and worst < 1e-8
+
+
+def bend1(case):
+    rows = [l.split() for l in open(case + "/results/bendExits.dat") if l.strip() and l.split()[0] == "1"]
+    return float(rows[0][3])
+
+
+def relativeError(case):
+    broken, error = passCounters.rate(case + "/log.icoUncoupledKinematicParcelFoam.pass",
+                                      lambda x: x["d2mm"][2])
+    return error / broken
+
+
+bl, bs = bend1(line), bend1(root + "/single")
+sigma = math.hypot(bl * relativeError(line), bs * relativeError(root + "/single"))
+z = (bl - bs) / sigma
+print("first bend's broken fraction: in the line %.5e, alone %.5e, difference %+.2e = %+.2f sigma (sigma %.2e)"
+      % (bl, bs, bl - bs, z, sigma))
+ok = ok and bs > 0 and abs(z) <= 4
 sys.exit(0 if ok else 1)
 PY
 }

@@ -13,6 +13,8 @@
 #include "volFields.H"
 #include "surfaceFields.H"
 #include "OSspecific.H"
+#include "convectionScheme.H"
+#include "coupledPolyPatch.H"
 #include "addToRunTimeSelectionTable.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
@@ -71,6 +73,38 @@ Foam::functionObjects::outletComposition::flux
 }
 
 
+Foam::scalar Foam::functionObjects::outletComposition::zoneSum
+(
+    const label zonei,
+    const surfaceScalarField& f
+) const
+{
+    const faceZone& zone = mesh_.faceZones()[zonei];
+    const polyBoundaryMesh& patches = mesh_.boundaryMesh();
+    scalar sum = 0;
+    forAll(zone, i)
+    {
+        const label facei = zone[i];
+        const scalar sign = zone.flipMap()[i] ? -1 : 1;
+        if (mesh_.isInternalFace(facei))
+        {
+            sum += sign*f[facei];
+            continue;
+        }
+        const label patchi = patches.whichPatch(facei);
+        const polyPatch& pp = patches[patchi];
+        // A processor face is in the zone on both sides: counted on the
+        // owner's (its value there is the owner's orientation)
+        if (isA<coupledPolyPatch>(pp) && !refCast<const coupledPolyPatch>(pp).owner())
+        {
+            continue;
+        }
+        sum += sign*f.boundaryField()[patchi][facei - pp.start()];
+    }
+    return returnReduce(sum, sumOp<scalar>());
+}
+
+
 void Foam::functionObjects::outletComposition::createFiles()
 {
     files_.clear();
@@ -86,10 +120,14 @@ void Foam::functionObjects::outletComposition::createFiles()
     );
     mkDir(dir);
 
-    files_.setSize(patches_.size());
-    forAll(patches_, pi)
+    files_.setSize(patches_.size() + zones_.size());
+    forAll(files_, pi)
     {
-        const word& patchName = mesh_.boundary()[patches_[pi]].name();
+        const bool isZone = pi >= patches_.size();
+        const word& patchName =
+            isZone
+          ? mesh_.faceZones()[zones_[pi - patches_.size()]].name()
+          : mesh_.boundary()[patches_[pi]].name();
 
         // Post-processing keeps the run's file: <patch>_<time>.dat beside
         // it, as OpenFOAM's writeFile does
@@ -103,8 +141,17 @@ void Foam::functionObjects::outletComposition::createFiles()
         OFstream& os = files_[pi];
         // 15 digits: balances over a run are checked to 1e-10 of the inflow
         os.precision(15);
-        os  << "# Flow through patch " << patchName
-            << " (positive leaving the domain)" << nl
+        if (isZone)
+        {
+            os  << "# Flow through face zone " << patchName
+                << " (positive along its orientation; advective)" << nl;
+        }
+        else
+        {
+            os  << "# Flow through patch " << patchName
+                << " (positive leaving the domain)" << nl;
+        }
+        os
             << "# time[s] Q[m3/s] massFlow[kg/s]";
         for (const granularSpecies& s : species_)
         {
@@ -165,8 +212,23 @@ Foam::functionObjects::outletComposition::outletComposition
         patches_ = openPatches(mesh_);
     }
 
-    flows_.setSize(patches_.size(), scalarList(species_.size() + 1, Zero));
-    cumulative_.setSize(patches_.size(), scalarList(species_.size(), Zero));
+    // Optional, default none: face zones inside the domain
+    if (dict.found("faceZones"))
+    {
+        const wordRes zoneNames(dict.get<wordRes>("faceZones"));
+        zones_ = mesh_.faceZones().indices(zoneNames);
+        if (zones_.empty())
+        {
+            FatalIOErrorInFunction(dict)
+                << "Function object " << name << ": 'faceZones' "
+                << zoneNames << " match no face zone; face zones: "
+                << mesh_.faceZones().names() << nl << exit(FatalIOError);
+        }
+    }
+
+    const label nMonitored = patches_.size() + zones_.size();
+    flows_.setSize(nMonitored, scalarList(species_.size() + 1, Zero));
+    cumulative_.setSize(nMonitored, scalarList(species_.size(), Zero));
 
     // Files in the directory of the run's start time; when post-processing
     // in that of the first time processed (created there)
@@ -249,6 +311,54 @@ bool Foam::functionObjects::outletComposition::execute()
         }
     }
 
+    if (zones_.empty())
+    {
+        return true;
+    }
+
+    // Through the face zones: each species' advective volume flux on every
+    // face, as the solver forms it
+    List<tmp<surfaceScalarField>> advective(species_.size());
+    forAll(species_, k)
+    {
+        if (speciesFlux[k].valid())
+        {
+            advective[k] = speciesFlux[k];
+            continue;
+        }
+        if (!speciesPhi[k].valid())
+        {
+            FatalErrorInFunction
+                << "Function object " << name() << ": faceZones need each "
+                << "species' own flux (phi." << species_[k].name
+                << ", bulkFlow particlePass) or nPhi." << species_[k].name
+                << " (bulkFlow muI); species sharing the bulk flux cross "
+                << "with speciesAdvection's limited weights, which this "
+                << "function object does not see" << nl << exit(FatalError);
+        }
+        const surfaceScalarField& phik = speciesPhi[k]();
+        advective[k] =
+            fv::convectionScheme<scalar>::New
+            (
+                mesh_,
+                phik,
+                mesh_.divScheme("div(phi,n)")
+            )().flux(phik, n[k]());
+    }
+    forAll(zones_, zi)
+    {
+        const label pi = patches_.size() + zi;
+        scalarList& flows = flows_[pi];
+        flows[0] = zoneSum(zones_[zi], phi);
+        forAll(species_, k)
+        {
+            const scalar massFlow =
+                species_[k].rho*zoneSum(zones_[zi], advective[k]());
+            flows[k + 1] = massFlow;
+            cumulative_[pi][k] += massFlow*dt;
+        }
+    }
+
     return true;
 }
 
@@ -259,12 +369,12 @@ bool Foam::functionObjects::outletComposition::write()
     {
         return true;
     }
-    if (files_.empty() && !patches_.empty())
+    if (files_.empty() && (patches_.size() || zones_.size()))
     {
         createFiles();
     }
 
-    forAll(patches_, pi)
+    forAll(files_, pi)
     {
         const scalarList& flows = flows_[pi];
         scalar total = 0;

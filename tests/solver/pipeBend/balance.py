@@ -31,7 +31,11 @@ if not scale > 0:
     print("nothing flowed in and nothing was present")
     sys.exit(1)
 error = abs(initial + inflow - outflow - held - dust) / scale
-fines = sum(float(v) for k, v in volumes.items() if k != "d2mm")
+# The finer classes: all but the coarsest of granularProperties
+d = {m.group(1): float(m.group(2)) for m in re.finditer(
+    r"(\w+)\s*\{\s*d\s+(\S+);", open(props).read())}
+coarsest = max(d, key=d.get)
+fines = sum(float(v) for k, v in volumes.items() if k != coarsest)
 print("in %.6e out %.6e held %.6e dust %.6e: balance %.2e of the inflow;"
       " finer classes held %.3e (%.3e of the held solids)"
       % (inflow, outflow, held, dust, error, fines, fines / held if held > 0 else 0.0))
