@@ -165,9 +165,15 @@ bend_chain()
     # A test's own species (and models) and feed instead of the tutorial's
     [ -f "$dir/granularProperties" ] && cp "$dir/granularProperties" "$dir/case/constant/"
     [ -f "$dir/feed" ] && cp "$dir/feed" "$dir/case/system/"
-    # The wall's restitution (wallContact's e; sed, not foamDictionary -set,
-    # which would drop the #includeIfPresent of bendParameters, absent yet)
-    sed -i "s/^\( *e  *\)[^;]*;/\1$e;/" "$dir/case/constant/granularProperties"
+    # The wall's restitution (wallContact's e; edited as text, not with
+    # foamDictionary -set, which would drop the #includeIfPresent of
+    # bendParameters, absent yet)
+    python3 - "$dir/case/constant/granularProperties" "$e" <<'PY'
+import re, sys
+path, e = sys.argv[1], sys.argv[2]
+text = open(path).read()
+open(path, "w").write(re.sub(r"(wallContact\s*\{[^}]*?\be\s+)[^;]*;", r"\g<1>%s;" % e, text, count=1))
+PY
     [ "$(foamDictionary -entry wallContact/e -value "$dir/case/constant/granularProperties")" = "$e" ] \
         || { echo "bend_chain: wallContact/e not set to $e"; return 1; }
     bend_chain_mesh "$dir/case" || return 1
@@ -347,6 +353,7 @@ PY
     bend_solve "$dir" || return 1
     python3 - "$dir" <<'PY'
 import math, re, sys
+from sdfoam.outletComposition import lastRow
 d = sys.argv[1]
 # Per fed volume: what the pass broke out of each class (and, fragments,
 # what it gained: born less broken, over the window) against what the
@@ -358,17 +365,7 @@ rows = {l.split()[0]: list(map(float, l.split()[1:])) for l in m[1].strip().spli
 fedPass = 20000 * math.pi / 6 * 0.002 ** 3
 
 
-def last(patch):
-    header, row = None, None
-    for line in open(d + "/case/postProcessing/outletComposition/0/" + patch + ".dat"):
-        if line.startswith("# time"):
-            header = line[1:].split()
-        elif line.strip() and not line.startswith("#"):
-            row = dict(zip(header, map(float, line.split())))
-    return row
-
-
-inlet, outlet = last("inlet"), last("outlet")
+inlet, outlet = lastRow(d + "/case", "inlet"), lastRow(d + "/case", "outlet")
 fed = -inlet["massFlow.d2mm[kg/s]"]
 worst = 0.0
 for c in rows:
@@ -572,6 +569,7 @@ import math, re, sys
 root = sys.argv[1]
 sys.path.insert(0, sys.argv[2])
 import passCounters
+from sdfoam.outletComposition import lastRow
 K = 10
 
 
@@ -580,15 +578,7 @@ def gains(name):
     rows of outletComposition), and the pass's gain per fed volume with
     its batch-means standard error."""
     d = root + "/" + name
-    def last(patch):
-        header, row = None, None
-        for line in open(d + "/case/postProcessing/outletComposition/0/" + patch + ".dat"):
-            if line.startswith("# time"):
-                header = line[1:].split()
-            elif line.strip() and not line.startswith("#"):
-                row = dict(zip(header, map(float, line.split())))
-        return row
-    inlet, outlet = last("inlet"), last("outlet")
+    inlet, outlet = lastRow(d + "/case", "inlet"), lastRow(d + "/case", "outlet")
     classes = [k[9:-6] for k in outlet if k.startswith("massFlow.")]
     fed = {c: 0.0 - inlet["massFlow.%s[kg/s]" % c] for c in classes}
     total = sum(fed.values())
@@ -847,16 +837,11 @@ import math, sys
 root = sys.argv[1]
 sys.path.insert(0, sys.argv[2])
 import passCounters
+from sdfoam.outletComposition import lastRow
 
 
 def last(case, station):
-    header, row = None, None
-    for line in open(case + "/postProcessing/outletComposition/0/" + station + ".dat"):
-        if line.startswith("# time"):
-            header = line[1:].split()
-        elif line.strip() and not line.startswith("#"):
-            row = dict(zip(header, map(float, line.split())))
-    return {k[9:-6]: v for k, v in row.items() if k.startswith("massFlow.")}
+    return {k[9:-6]: v for k, v in lastRow(case, station).items() if k.startswith("massFlow.")}
 
 
 def dustRate(case):

@@ -74,6 +74,13 @@ def readSeries(case, patch):
     return header, [rows[t] for t in sorted(rows)]
 
 
+def lastRow(case, station):
+    """The last row of postProcessing/outletComposition/*/<station>.dat (a
+    patch or a face zone; restarts joined) as {column: value}."""
+    header, rows = readSeries(case, station)
+    return dict(zip(header, rows[-1]))
+
+
 def columns(header, names):
     """Indices of (massFlow, massFraction) for each species from the header."""
     low = [h.lower() for h in header]

@@ -187,6 +187,32 @@ Foam::breakageSource::breakageSource
     {
         brokenVolume_.reset(accumulated("brokenVolume"));
     }
+    if (active())
+    {
+        gain_.setSize(mixture.size());
+        forAll(gain_, i)
+        {
+            const fvMesh& mesh = mixture.mesh();
+            gain_.set
+            (
+                i,
+                new volScalarField
+                (
+                    IOobject
+                    (
+                        "breakageGain." + mixture.names()[i],
+                        mesh.time().timeName(),
+                        mesh,
+                        IOobject::NO_READ,
+                        IOobject::NO_WRITE
+                    ),
+                    mesh,
+                    dimensionedScalar(dimless, Zero),
+                    zeroGradientFvPatchScalarField::typeName
+                )
+            );
+        }
+    }
 }
 
 
@@ -241,7 +267,7 @@ Foam::tmp<Foam::fvScalarMatrix> Foam::breakageSource::source
 
 void Foam::breakageSource::accumulate()
 {
-    if (!active() || (!dust_ && !brokenVolume_))
+    if (!active())
     {
         return;
     }
@@ -284,6 +310,24 @@ void Foam::breakageSource::accumulate()
     if (brokenVolume_)
     {
         advance(brokenVolume_(), brokenRate);
+    }
+
+    // Each species' net gain, -lossRate n_i + sum over its parents of
+    // beta S_j n_j: the source its equation had
+    forAll(gain_, i)
+    {
+        volScalarField::Internal gainRate
+        (
+            -lossRate(i)*mixture_.n()[i].internalField()
+        );
+        for (const label j : parents_[i])
+        {
+            const scalar beta = weights_[j].volume[i];
+            gainRate.field() +=
+                beta*selection_->S(j).primitiveField()
+               *mixture_.n()[j].primitiveField();
+        }
+        advance(gain_[i], gainRate);
     }
 }
 
