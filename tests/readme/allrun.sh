@@ -2,7 +2,8 @@
 # The README's commands as a newcomer types them (sourced by tests/run;
 # tests readme/allrun/*): the main job ./Allrun, serial and on 2 ranks, in
 # the project's own tutorials/silo2D (where the README sends the user), and
-# tutorials/pipeBend/Allrun in a copy of the tutorials.
+# tutorials/pipeBend/Allrun in a copy of the tutorials, tutorials/conveyingLine
+# in a copy of the case alone.
 
 # The documented outcome of the default silo2D run (tutorials/silo2D/README.md,
 # "What it shows"; docs/user/outputs.md): the fields each written time
@@ -141,6 +142,53 @@ z = (cont - ref) / sigma
 print("continuum %.4e, reference %.4e +- %.2e: %.2f sigma_ref (band 2 sqrt(2) = %.2f)"
       % (cont, ref, sigma, z, 2 * math.sqrt(2)))
 ok = ok and parent == "d2mm" and abs(cont - broken) <= 1e-6 * broken and abs(z) <= 2 * math.sqrt(2)
+sys.exit(0 if ok else 1)
+PY
+}
+
+# tutorials/conveyingLine/Allrun as the README gives it, in a copy of the
+# case alone outside the project (the case runs the pipe bend's stages by
+# $SDF_PROJECT_DIR and includes its dictionaries: a copied case must work),
+# its line shortened on the command line (two bends, straights of 2 D, legs
+# of 1 D, 5,000 parcels per second per class; options after the case's own
+# override them): results/bendExits.dat with the inlet, exit1, exit2 and
+# the outlet for every class and one row per bend, each bend's broken
+# fraction in [0, 1), the first's > 0; the inlet values of 0/n.<class>
+# exactly loading rho_gas w / rho (1e-9) for the feed's mass fractions 0.6,
+# 0.3, 0.1 and 0; results/productDistribution.dat with fed mass fractions
+# within 1 % of those (each class crosses the inlet at its own pass
+# velocity, not exactly the gas's); results/bendExits.png
+test_readme_conveying_line()
+{
+    local dir="$workRoot/readmeConveyingLine"
+    rm -rf "$dir"; mkdir -p "$dir"
+    cp -r "$projectDir/tutorials/conveyingLine" "$dir/"
+    "$dir/conveyingLine/Allclean" > /dev/null 2>&1
+    "$dir/conveyingLine/Allrun" -bends 2 -straight 2 -upstream 1 -downstream 1 -parcels 5000 \
+        > "$dir/log.Allrun" 2>&1 || { tail -n 30 "$dir/log.Allrun"; return 1; }
+    [ -s "$dir/conveyingLine/results/bendExits.png" ] || { echo "no results/bendExits.png"; return 1; }
+    python3 - "$dir/conveyingLine/results" <<'PY'
+import sys
+results = sys.argv[1]
+rows = [l.split() for l in open(results + "/bendExits.dat") if l.strip() and not l.startswith("#")]
+stations = [r for r in rows if len(r) == 7 and not r[0].isdigit()]
+bends = [r for r in rows if r[0].isdigit()]
+names = sorted(set(r[0] for r in stations))
+classes = ["d2mm", "d1mm", "d500um", "d250um"]
+ok = names == sorted(["inlet", "exit1", "exit2", "outlet"]) and len(stations) == 4 * len(classes) and len(bends) == 2
+broken = [float(b[3]) for b in bends]
+print("stations %s, bends' broken fractions %s" % (names, broken))
+ok = ok and all(0 <= b < 1 for b in broken) and broken[0] > 0
+fed = {l.split()[0]: float(l.split()[4]) for l in open(results + "/productDistribution.dat") if not l.startswith("#")}
+print("fed mass fractions %s" % fed)
+want = {"d2mm": 0.6, "d1mm": 0.3, "d500um": 0.1, "d250um": 0.0}
+ok = ok and all(abs(fed[c] - w) <= 0.01 * w for c, w in want.items())
+import re
+for c, w in want.items():
+    text = open(results + "/../0/n." + c).read()
+    inlet = float(re.search(r"inlet\s*\{[^}]*value\s+uniform\s+(\S+);", text).group(1))
+    print("0/n.%s inlet %.9e, loading rho_gas w / rho %.9e" % (c, inlet, 1.2 * w / 1590))
+    ok = ok and abs(inlet - 1.2 * w / 1590) <= 1e-9 * 1.2 / 1590
 sys.exit(0 if ok else 1)
 PY
 }
