@@ -93,9 +93,15 @@ Foam::scalar Foam::functionObjects::outletComposition::zoneSum
         }
         const label patchi = patches.whichPatch(facei);
         const polyPatch& pp = patches[patchi];
-        // A processor face is in the zone on both sides: counted on the
-        // owner's (its value there is the owner's orientation)
-        if (isA<coupledPolyPatch>(pp) && !refCast<const coupledPolyPatch>(pp).owner())
+        // Only what crosses inside the domain: a zone's faces on walls or
+        // other boundaries are not crossings. A processor face is in the
+        // zone on both sides: counted on the owner's (its value there is
+        // the owner's orientation)
+        if
+        (
+            !isA<coupledPolyPatch>(pp)
+         || !refCast<const coupledPolyPatch>(pp).owner()
+        )
         {
             continue;
         }

@@ -48,6 +48,14 @@ print("in %.6e out %.6e held %.6e dust %.6e: balance %.2e of the inflow;"
       " finer classes held %.3e (%.3e of the held solids)"
       % (inflow, outflow, held, dust, error, fines, fines / held if held > 0 else 0.0))
 worstClass = 0.0
+# With breakage, every class must have its gain on the log's line: a check
+# that found none would otherwise pass on the total alone
+propsText = open(props).read()
+breaking = re.search(r"\bbreakage\s*\{\s*model\s+(\w+)\s*;", propsText)
+if breaking and breaking.group(1) != "none" and set(gains) != set(volumes):
+    print("breakage %s, but the log's Solids line has a breakage gain for %s of the classes %s"
+          % (breaking.group(1), sorted(gains), sorted(volumes)))
+    sys.exit(1)
 if gains:
     for c in volumes:
         terms = (initialPer.get(c, 0.0), -into[c], out[c], gains[c], volumes[c])
