@@ -159,9 +159,9 @@ Foam::breakageSource::breakageSource
     }
     Info<< endl;
 
-    // The accumulated fields: read back on a restart, written with the
-    // species
-    auto accumulated = [&mixture](const word& name)
+    // The accumulated fields: read back on a restart and written with the
+    // species (kept), or only the log's (the per-species gains)
+    auto accumulated = [&mixture](const word& name, const bool kept)
     {
         const fvMesh& mesh = mixture.mesh();
         return new volScalarField
@@ -171,8 +171,8 @@ Foam::breakageSource::breakageSource
                 name,
                 mesh.time().timeName(),
                 mesh,
-                IOobject::READ_IF_PRESENT,
-                IOobject::AUTO_WRITE
+                kept ? IOobject::READ_IF_PRESENT : IOobject::NO_READ,
+                kept ? IOobject::AUTO_WRITE : IOobject::NO_WRITE
             ),
             mesh,
             dimensionedScalar(name, dimless, Zero),
@@ -181,36 +181,18 @@ Foam::breakageSource::breakageSource
     };
     if (dustSink_)
     {
-        dust_.reset(accumulated("dust"));
+        dust_.reset(accumulated("dust", true));
     }
     if (mixture.writeField("brokenVolume"))
     {
-        brokenVolume_.reset(accumulated("brokenVolume"));
+        brokenVolume_.reset(accumulated("brokenVolume", true));
     }
     if (active())
     {
         gain_.setSize(mixture.size());
         forAll(gain_, i)
         {
-            const fvMesh& mesh = mixture.mesh();
-            gain_.set
-            (
-                i,
-                new volScalarField
-                (
-                    IOobject
-                    (
-                        "breakageGain." + mixture.names()[i],
-                        mesh.time().timeName(),
-                        mesh,
-                        IOobject::NO_READ,
-                        IOobject::NO_WRITE
-                    ),
-                    mesh,
-                    dimensionedScalar(dimless, Zero),
-                    zeroGradientFvPatchScalarField::typeName
-                )
-            );
+            gain_.set(i, accumulated("breakageGain." + mixture.names()[i], false));
         }
     }
 }
