@@ -81,6 +81,25 @@ def lastRow(case, station):
     return dict(zip(header, rows[-1]))
 
 
+def dustVolumeRate(logPath):
+    """The dust volume made per unit time at the end of a run of
+    segregationDegradationFoam [m3/s]: the difference of the last two
+    "Solids:" lines of its log over their time step (0 with fewer)."""
+    log = open(logPath).read()
+    times = [float(t) for t in re.findall(r"^Time = (\S+)", log, re.M)]
+    dusts = [float(v) for v in re.findall(r"^Solids: .*dust volume (\S+)", log, re.M)]
+    if len(dusts) < 2:
+        return 0.0
+    return (dusts[-1] - dusts[-2]) / (times[-1] - times[-2])
+
+
+def dictValue(path, key):
+    """The value of entry KEY (a/b/c) of the OpenFOAM dictionary PATH, as
+    text (foamDictionary: includes and macros expanded)."""
+    return subprocess.run(["foamDictionary", "-entry", key, "-value", path],
+                          capture_output=True, text=True, check=True).stdout.strip()
+
+
 def columns(header, names):
     """Indices of (massFlow, massFraction) for each species from the header."""
     low = [h.lower() for h in header]
