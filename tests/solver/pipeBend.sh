@@ -626,7 +626,8 @@ PY
 #   - the solids balance per run to 1e-10 (tests/solver/pipeBend/balance.py)
 # Refused before anything runs, with the file and entry named and no stage
 # made: classes of two densities, a feed naming a class that is not a
-# species, feed fractions not summing to 1, particlePassCoeffs pipeDiameter
+# species, feed fractions not summing to 1, a negative wall roughness,
+# particlePassCoeffs pipeDiameter
 # other than -D; and a pass whose kinematicCloudProperties hard-codes
 # another rho0 than granularProperties stops at its first parcel naming both
 test_pipe_bend_another_product()
@@ -725,6 +726,11 @@ PY
 p = case + "/system/feed"
 text = open(p).read()
 open(p, "w").write(re.sub(r"massFractions\s*\{.*?\}", "massFractions { d3mm 0.6; d1500um 0.3; }", text, flags=re.S))
+PY
+    refused roughness "granularProperties: wallContact/roughness -2: the standard deviation of the wall's inclination lies in \[0, 45) degrees" -D 0.1 <<'PY' || return 1
+p = case + "/constant/granularProperties"
+text = open(p).read()
+open(p, "w").write(text.replace("wallContact { e 0.7; mu 0.2; }", "wallContact { e 0.7; mu 0.2; roughness -2; }"))
 PY
     refused pipeDiameter "particlePassCoeffs/pipeDiameter 0.05 differs from the line's diameter (Allrun -D 0.1" -D 0.1 <<'PY' || return 1
 p = case + "/constant/granularProperties"
@@ -894,6 +900,142 @@ z = (bl - bs) / sigma
 print("first bend's broken fraction: in the line %.5e, alone %.5e, difference %+.2e = %+.2f sigma (sigma %.2e)"
       % (bl, bs, bl - bs, z, sigma))
 ok = ok and bs > 0 and abs(z) <= 4
+sys.exit(0 if ok else 1)
+PY
+}
+
+# Rough wall: 1 mm grains on no force (no drag, no gravity; nothing
+# breaks) fired at a flat floor at 10 m/s, 2000 per run, caught in flight
+# after one rebound from breakingRebound's wall (e 0.8, mu 0.1).
+# - roughness 0, impact angle 30 degrees: every grain's rebound velocity
+#   is the smooth wall's, (V cos a (1 - mu), 0, e V sin a), to 1e-12;
+# - roughness 5 degrees at impact angles 10 and 45 degrees: the mean of
+#   each rebound velocity component and the standard deviation of the
+#   vertical and lateral ones against the model's (two Gaussian tilts,
+#   kept with probability U^ & n and only when the rebound leaves the
+#   wall) computed by quadrature, each within 4 standard errors of the
+#   sample (the same statistics without the shadow effect's weighting are
+#   printed beside them: at 10 degrees they lie outside)
+# - roughness 50 degrees: refused by the pass, naming the entry
+test_pipe_bend_rough_wall()
+{
+    local base="$workRoot/pipeBendRoughWall" run angle roughness
+    rm -rf "$base"
+    mkdir -p "$base"
+    for run in "30 0" "10 5" "45 5"
+    do
+        set -- $run
+        angle=$1; roughness=$2
+        local dir="$base/angle$angle-roughness$roughness"
+        cp -r "$projectDir/tests/solver/pipeBend/roughWall" "$dir"
+        python3 - "$dir" "$angle" "$roughness" <<'PY'
+import math, sys
+case, angle, roughness = sys.argv[1], float(sys.argv[2]), sys.argv[3]
+a = math.radians(angle)
+with open(case + "/constant/impact", "w") as f:
+    f.write("U0 (%.17g 0 %.17g);\nroughness %s;\n" % (10 * math.cos(a), -10 * math.sin(a), roughness))
+# 2000 grains 2 mm above the floor on a 40 x 50 grid, x in [-0.06, -0.01]
+with open(case + "/constant/kinematicCloudPositions", "w") as f:
+    f.write("FoamFile { version 2.0; format ascii; class vectorField; object kinematicCloudPositions; }\n(\n")
+    for i in range(40):
+        for j in range(50):
+            f.write("(%.6f %.6f 0.002)\n" % (-0.06 + 0.05 * (i + 0.5) / 40, -0.04 + 0.08 * (j + 0.5) / 50))
+    f.write(")\n")
+PY
+        blockMesh -case "$dir" > "$dir/log.blockMesh" 2>&1 || { tail -20 "$dir/log.blockMesh"; return 1; }
+        icoUncoupledKinematicParcelFoam -case "$dir" > "$dir/log.pass" 2>&1 || { tail -30 "$dir/log.pass"; return 1; }
+    done
+    # A roughness outside [0, 45) degrees: the pass stops naming the entry
+    local bad="$base/angle10-roughness50"
+    cp -r "$base/angle10-roughness5" "$bad"
+    sed -i 's/^roughness .*/roughness 50;/' "$bad/constant/impact"
+    if icoUncoupledKinematicParcelFoam -case "$bad" > "$bad/log.pass" 2>&1
+    then
+        echo "roughness 50: accepted"; return 1
+    fi
+    grep -q "'roughness 50' in .*breakingReboundCoeffs.\?: the standard deviation of the wall's inclination, in degrees, lies in \[0, 45)" "$bad/log.pass" \
+        || { tail -20 "$bad/log.pass"; echo "roughness 50: no message naming the entry"; return 1; }
+    grep -m1 "'roughness 50'" "$bad/log.pass"
+    python3 - "$base" <<'PY'
+import math, re, sys
+base = sys.argv[1]
+V, e, mu = 10.0, 0.8, 0.1
+
+
+def velocities(case):
+    text = open(case + "/0.004/lagrangian/kinematicCloud/U").read()
+    # a list of equal values is written N{value}
+    same = re.search(r"^(\d+)\{\(([^()\s]+) ([^()\s]+) ([^()\s]+)\)\}", text, re.M)
+    if same:
+        return [tuple(map(float, same.groups()[1:]))] * int(same.group(1))
+    return [tuple(map(float, m)) for m in re.findall(r"\(([^()\s]+) ([^()\s]+) ([^()\s]+)\)", text)]
+
+
+def rebound(U, n):
+    Un = sum(u * c for u, c in zip(U, n))
+    return tuple(u - (1 + e) * Un * c - mu * (u - Un * c) for u, c in zip(U, n))
+
+
+def model(angle, roughness, shadow=True, steps=241, width=6.0):
+    """Mean and standard deviation of the rebound velocity's components
+    over the tilts (midpoint quadrature over +-width sigma)."""
+    a, s = math.radians(angle), math.radians(roughness)
+    U = (V * math.cos(a), 0.0, -V * math.sin(a))
+    nw, t, b = (0.0, 0.0, -1.0), (1.0, 0.0, 0.0), (0.0, -1.0, 0.0)
+    h = 2 * width / steps
+    m0 = 0.0
+    m1 = [0.0] * 3
+    m2 = [0.0] * 3
+    for i in range(steps):
+        g1 = s * (-width + (i + 0.5) * h)
+        for k in range(steps):
+            g2 = s * (-width + (k + 0.5) * h)
+            f = math.exp(-0.5 * ((g1 / s) ** 2 + (g2 / s) ** 2))
+            n = [nw[c] + math.tan(g1) * t[c] + math.tan(g2) * b[c] for c in range(3)]
+            norm = math.sqrt(sum(c * c for c in n))
+            n = [c / norm for c in n]
+            hit = sum(U[c] * n[c] for c in range(3)) / V
+            if hit <= 0:
+                continue
+            R = rebound(U, n)
+            if R[2] <= 0:  # does not leave the floor (its outward normal is -z)
+                continue
+            w = f * (hit if shadow else 1.0)
+            m0 += w
+            for c in range(3):
+                m1[c] += w * R[c]
+                m2[c] += w * R[c] * R[c]
+    mean = [m / m0 for m in m1]
+    sd = [math.sqrt(max(m2[c] / m0 - mean[c] ** 2, 0)) for c in range(3)]
+    return mean, sd
+
+
+ok = True
+# The smooth wall, exactly
+a = math.radians(30)
+want = (V * math.cos(a) * (1 - mu), 0.0, e * V * math.sin(a))
+got = velocities(base + "/angle30-roughness0")
+worst = max(abs(g[c] - want[c]) / V for g in got for c in range(3))
+print("smooth wall, 30 deg: %d grains, largest |U - (%.6f, 0, %.6f)|/V = %.2e (tolerance 1e-12)"
+      % (len(got), want[0], want[2], worst))
+ok = ok and len(got) == 2000 and worst <= 1e-12
+
+for angle in (10, 45):
+    got = velocities(base + "/angle%d-roughness5" % angle)
+    N = len(got)
+    mean = [sum(g[c] for g in got) / N for c in range(3)]
+    sd = [math.sqrt(sum((g[c] - mean[c]) ** 2 for g in got) / (N - 1)) for c in range(3)]
+    want, wantSd = model(angle, 5)
+    plain, plainSd = model(angle, 5, shadow=False)
+    print("roughness 5 deg, impact angle %d deg, %d grains (model; without the shadow weighting):" % (angle, N))
+    ok = ok and N == 2000
+    checks = [("mean U%s" % "xyz"[c], mean[c], want[c], plain[c], sd[c] / math.sqrt(N)) for c in range(3)]
+    checks += [("sd U%s" % "xyz"[c], sd[c], wantSd[c], plainSd[c], sd[c] / math.sqrt(2 * (N - 1))) for c in (1, 2)]
+    for name, m, w, p, se in checks:
+        z = (m - w) / se
+        print("  %-6s measured %9.5f model %9.5f (%+6.2f se)   unweighted %9.5f (%+6.2f se)"
+              % (name, m, w, z, p, (m - p) / se))
+        ok = ok and abs(z) <= 4
 sys.exit(0 if ok else 1)
 PY
 }

@@ -51,6 +51,81 @@ bool Foam::BreakingRebound<CloudType>::readExpected(const dictionary& coeffs)
 
 
 template<class CloudType>
+Foam::scalar Foam::BreakingRebound<CloudType>::readRoughness
+(
+    const dictionary& coeffs
+)
+{
+    const scalar degrees(coeffs.getOrDefault("roughness", scalar(0)));
+    if (!(degrees >= 0 && degrees < 45))
+    {
+        FatalIOErrorInFunction(coeffs)
+            << "'roughness " << degrees << "' in " << coeffs.name()
+            << ": the standard deviation of the wall's inclination, in"
+            << " degrees, lies in [0, 45) (0: a smooth wall)" << nl
+            << exit(FatalIOError);
+    }
+    return degToRad(degrees);
+}
+
+
+template<class CloudType>
+Foam::vector Foam::BreakingRebound<CloudType>::rebound
+(
+    const vector& U,
+    const vector& n
+) const
+{
+    const scalar Un = U & n;
+    return U - (1 + e_)*Un*n - mu_*(U - Un*n);
+}
+
+
+template<class CloudType>
+Foam::vector Foam::BreakingRebound<CloudType>::roughNormal
+(
+    const vector& U,
+    const vector& nw
+)
+{
+    // The impact's plane: nw and the tangential direction t (any for a
+    // normal impact)
+    vector t = U - (U & nw)*nw;
+    if (mag(t) < SMALL*mag(U))
+    {
+        t = nw ^ (mag(nw.x()) < 0.9 ? vector(1, 0, 0) : vector(0, 1, 0));
+    }
+    t.normalise();
+    const vector b = nw ^ t;
+
+    // The facets are drawn with their inclinations' distribution by area
+    // and hit in proportion to the flux onto them, U^ & n (the shadow
+    // effect: a facet turned away from the parcel is hit less, or not at
+    // all); a rebound that would not leave the pipe's wall is drawn again
+    // (it would hit the wall again at once)
+    const vector Uhat = U/mag(U);
+    Random& rnd = this->owner().rndGen();
+    for (label draw = 0; draw < 1000; ++draw)
+    {
+        const scalar inPlane = roughness_*rnd.template GaussNormal<scalar>();
+        const scalar across = roughness_*rnd.template GaussNormal<scalar>();
+        const vector n = normalised(nw + ::tan(inPlane)*t + ::tan(across)*b);
+        if
+        (
+            rnd.template sample01<scalar>() < (Uhat & n)
+         && (rebound(U, n) & nw) < 0
+        )
+        {
+            return n;
+        }
+    }
+    // A grazing impact on a wall too rough to draw a tilt it can hit and
+    // leave (after 1000 draws): the smooth wall
+    return nw;
+}
+
+
+template<class CloudType>
 bool Foam::BreakingRebound<CloudType>::sampleFragments
 (
     typename CloudType::parcelType& p,
@@ -186,6 +261,7 @@ Foam::BreakingRebound<CloudType>::BreakingRebound
     PatchInteractionModel<CloudType>(dict, cloud, typeName),
     e_(this->coeffDict().template get<scalar>("e")),
     mu_(this->coeffDict().template get<scalar>("mu")),
+    roughness_(readRoughness(this->coeffDict())),
     startTime_(this->coeffDict().getOrDefault("startTime", scalar(0))),
     species_(granularMixture::readSpecies(mixture)),
     kernel_(wallImpactCoeffs(mixture.subDict("breakage"))),
@@ -227,6 +303,7 @@ Foam::BreakingRebound<CloudType>::BreakingRebound
     PatchInteractionModel<CloudType>(pim),
     e_(pim.e_),
     mu_(pim.mu_),
+    roughness_(pim.roughness_),
     startTime_(pim.startTime_),
     species_(pim.species_),
     kernel_(pim.kernel_),
@@ -303,9 +380,21 @@ bool Foam::BreakingRebound<CloudType>::correct
             return true;
         }
 
-        U -= (1 + e_)*Un*nw;
+        if (roughness_ > 0)
+        {
+            // The rebound from the wall's local inclination
+            U = rebound(U, roughNormal(U, nw));
+        }
+        else
+        {
+            U -= (1 + e_)*Un*nw;
+            U -= mu_*Ut;
+        }
     }
-    U -= mu_*Ut;
+    else
+    {
+        U -= mu_*Ut;
+    }
     U += Up;
 
     // The fragment parcels: copies of the rebounding parcel (same place,
