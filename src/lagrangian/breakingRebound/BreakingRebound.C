@@ -109,6 +109,15 @@ Foam::vector Foam::BreakingRebound<CloudType>::roughNormal
     {
         const scalar inPlane = roughness_*rnd.template GaussNormal<scalar>();
         const scalar across = roughness_*rnd.template GaussNormal<scalar>();
+        if
+        (
+            mag(inPlane) >= constant::mathematical::piByTwo
+         || mag(across) >= constant::mathematical::piByTwo
+        )
+        {
+            // A tilt past 90 degrees is no facet (tan would fold it back)
+            continue;
+        }
         const vector n = normalised(nw + ::tan(inPlane)*t + ::tan(across)*b);
         if
         (
@@ -119,8 +128,10 @@ Foam::vector Foam::BreakingRebound<CloudType>::roughNormal
             return n;
         }
     }
-    // A grazing impact on a wall too rough to draw a tilt it can hit and
-    // leave (after 1000 draws): the smooth wall
+    // No tilt kept in 1000 draws: a grazing impact (a grain sliding along
+    // the wall) on a wall so smooth that hardly any facet faces it; the
+    // smooth wall's rebound, counted (info)
+    ++smoothFallbacks_;
     return nw;
 }
 
@@ -262,6 +273,7 @@ Foam::BreakingRebound<CloudType>::BreakingRebound
     e_(this->coeffDict().template get<scalar>("e")),
     mu_(this->coeffDict().template get<scalar>("mu")),
     roughness_(readRoughness(this->coeffDict())),
+    smoothFallbacks_(0),
     startTime_(this->coeffDict().getOrDefault("startTime", scalar(0))),
     species_(granularMixture::readSpecies(mixture)),
     kernel_(wallImpactCoeffs(mixture.subDict("breakage"))),
@@ -304,6 +316,7 @@ Foam::BreakingRebound<CloudType>::BreakingRebound
     e_(pim.e_),
     mu_(pim.mu_),
     roughness_(pim.roughness_),
+    smoothFallbacks_(pim.smoothFallbacks_),
     startTime_(pim.startTime_),
     species_(pim.species_),
     kernel_(pim.kernel_),
@@ -442,6 +455,13 @@ void Foam::BreakingRebound<CloudType>::info(Ostream& os)
     }
     os  << "      dust volume [m3] "
         << returnReduce(dustVolume_, sumOp<scalar>()) << nl;
+    if (roughness_ > 0)
+    {
+        os  << "      rough wall " << radToDeg(roughness_) << " deg: impacts"
+            << " rebounding from the smooth wall (no facet kept in 1000"
+            << " draws) " << returnReduce(smoothFallbacks_, sumOp<label>())
+            << nl;
+    }
     os.precision(precision);
 }
 
