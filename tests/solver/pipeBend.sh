@@ -908,34 +908,40 @@ PY
 # Rough wall: 1 mm grains on no force (no drag, no gravity; nothing
 # breaks) fired at a flat floor at 10 m/s, 2000 per run, caught in flight
 # after one rebound from breakingRebound's wall (e 0.8, mu 0.1).
-# - roughness 0, impact angle 30 degrees: every grain's rebound velocity
-#   is the smooth wall's, (V cos a (1 - mu), 0, e V sin a), to 1e-12;
-# - roughness 5 degrees at impact angles 10 and 45 degrees: the mean of
-#   each rebound velocity component and the standard deviation of the
-#   vertical and lateral ones against the model's (two Gaussian tilts,
-#   kept with probability U^ & n and only when the rebound leaves the
-#   wall) computed by quadrature, each within 4 standard errors of the
-#   sample; the same means without the shadow effect's weighting are
-#   printed beside them, and at 10 degrees those of Ux and Uz must lie
-#   outside 4 standard errors (the test tells the weighting from none)
-# - roughness 50 degrees: refused by the pass, naming the entry
+# - smooth walls, exactly (to 1e-12 of V, every grain): the loss fraction
+#   at 30 degrees, (V cos a (1 - mu), 0, e V sin a); Coulomb friction at
+#   30 degrees, a sliding impact, (V cos a - mu (1 + e) V sin a, 0,
+#   e V sin a), and at 80 degrees, one that sticks, (5/7 V cos a, 0,
+#   e V sin a);
+# - roughness 5 degrees at impact angles 10 and 45 degrees (loss
+#   fraction) and 10 degrees (Coulomb): the mean of each rebound velocity
+#   component and the standard deviation of the vertical and lateral ones
+#   against the model's (two Gaussian tilts, kept with probability U^ & n
+#   and only when the rebound leaves the wall) computed by quadrature,
+#   each within 4 standard errors of the sample; the same means without
+#   the shadow effect's weighting are printed beside them, and at 10
+#   degrees those of Ux and Uz must lie outside 4 standard errors (the
+#   test tells the weighting from none)
+# - roughness 50 degrees, and a tangential law that is not one: refused
+#   by the pass, naming the entry
 test_pipe_bend_rough_wall()
 {
-    local base="$workRoot/pipeBendRoughWall" run angle roughness
+    local base="$workRoot/pipeBendRoughWall" run angle roughness tangential
     rm -rf "$base"
     mkdir -p "$base"
-    for run in "30 0" "10 5" "45 5"
+    for run in "30 0 lossFraction" "30 0 coulomb" "80 0 coulomb" "10 5 lossFraction" "45 5 lossFraction" "10 5 coulomb"
     do
         set -- $run
-        angle=$1; roughness=$2
-        local dir="$base/angle$angle-roughness$roughness"
+        angle=$1; roughness=$2; tangential=$3
+        local dir="$base/angle$angle-roughness$roughness-$tangential"
         cp -r "$projectDir/tests/solver/pipeBend/roughWall" "$dir"
-        python3 - "$dir" "$angle" "$roughness" <<'PY'
+        python3 - "$dir" "$angle" "$roughness" "$tangential" <<'PY'
 import math, sys
-case, angle, roughness = sys.argv[1], float(sys.argv[2]), sys.argv[3]
+case, angle, roughness, tangential = sys.argv[1], float(sys.argv[2]), sys.argv[3], sys.argv[4]
 a = math.radians(angle)
 with open(case + "/constant/impact", "w") as f:
-    f.write("U0 (%.17g 0 %.17g);\nroughness %s;\n" % (10 * math.cos(a), -10 * math.sin(a), roughness))
+    f.write("U0 (%.17g 0 %.17g);\nroughness %s;\ntangential %s;\n"
+            % (10 * math.cos(a), -10 * math.sin(a), roughness, tangential))
 # 2000 grains 2 mm above the floor on a 40 x 50 grid, x in [-0.06, -0.01]
 with open(case + "/constant/kinematicCloudPositions", "w") as f:
     f.write("FoamFile { version 2.0; format ascii; class vectorField; object kinematicCloudPositions; }\n(\n")
@@ -949,7 +955,7 @@ PY
     done
     # A roughness outside [0, 45) degrees: the pass stops naming the entry
     local bad="$base/angle10-roughness50"
-    cp -r "$base/angle10-roughness5" "$bad"
+    cp -r "$base/angle10-roughness5-lossFraction" "$bad"
     sed -i 's/^roughness .*/roughness 50;/' "$bad/constant/impact"
     if icoUncoupledKinematicParcelFoam -case "$bad" > "$bad/log.pass" 2>&1
     then
@@ -958,6 +964,16 @@ PY
     grep -q "'roughness 50' in .*breakingReboundCoeffs.\?: the standard deviation of the wall's inclination, in degrees, lies in \[0, 45)" "$bad/log.pass" \
         || { tail -20 "$bad/log.pass"; echo "roughness 50: no message naming the entry"; return 1; }
     grep -m1 "'roughness 50'" "$bad/log.pass"
+    bad="$base/tangentialStick"
+    cp -r "$base/angle10-roughness5-lossFraction" "$bad"
+    sed -i 's/^tangential .*/tangential stick;/' "$bad/constant/impact"
+    if icoUncoupledKinematicParcelFoam -case "$bad" > "$bad/log.pass" 2>&1
+    then
+        echo "tangential stick: accepted"; return 1
+    fi
+    grep -q "'tangential stick' in .*breakingReboundCoeffs.\?: valid choices are lossFraction .* and coulomb" "$bad/log.pass" \
+        || { tail -20 "$bad/log.pass"; echo "tangential stick: no message naming the entry"; return 1; }
+    grep -m1 "'tangential stick'" "$bad/log.pass"
     python3 - "$base" <<'PY'
 import math, re, sys
 base = sys.argv[1]
@@ -973,12 +989,19 @@ def velocities(case):
     return [tuple(map(float, m)) for m in re.findall(r"\(([^()\s]+) ([^()\s]+) ([^()\s]+)\)", text)]
 
 
-def rebound(U, n):
+def rebound(U, n, law):
     Un = sum(u * c for u, c in zip(U, n))
-    return tuple(u - (1 + e) * Un * c - mu * (u - Un * c) for u, c in zip(U, n))
+    Ut = [u - Un * c for u, c in zip(U, n)]
+    if law == "lossFraction":
+        after = [(1 - mu) * u for u in Ut]
+    else:
+        magUt = math.sqrt(sum(u * u for u in Ut))
+        slide = mu * (1 + e) * Un
+        after = [(1 - slide / magUt) * u if magUt > 3.5 * slide else 5.0 / 7.0 * u for u in Ut]
+    return tuple(u - e * Un * c for u, c in zip(after, n))
 
 
-def model(angle, roughness, shadow=True, steps=241, width=6.0):
+def model(angle, roughness, law, shadow=True, steps=241, width=6.0):
     """Mean and standard deviation of the rebound velocity's components
     over the tilts (midpoint quadrature over +-width sigma)."""
     a, s = math.radians(angle), math.radians(roughness)
@@ -999,7 +1022,7 @@ def model(angle, roughness, shadow=True, steps=241, width=6.0):
             hit = sum(U[c] * n[c] for c in range(3)) / V
             if hit <= 0:
                 continue
-            R = rebound(U, n)
+            R = rebound(U, n, law)
             if R[2] <= 0:  # does not leave the floor (its outward normal is -z)
                 continue
             w = f * (hit if shadow else 1.0)
@@ -1013,23 +1036,27 @@ def model(angle, roughness, shadow=True, steps=241, width=6.0):
 
 
 ok = True
-# The smooth wall, exactly
-a = math.radians(30)
-want = (V * math.cos(a) * (1 - mu), 0.0, e * V * math.sin(a))
-got = velocities(base + "/angle30-roughness0")
-worst = max(abs(g[c] - want[c]) / V for g in got for c in range(3))
-print("smooth wall, 30 deg: %d grains, largest |U - (%.6f, 0, %.6f)|/V = %.2e (tolerance 1e-12)"
-      % (len(got), want[0], want[2], worst))
-ok = ok and len(got) == 2000 and worst <= 1e-12
+# The smooth walls, exactly
+for angle, law, want in [
+        (30, "lossFraction", lambda a: (V * math.cos(a) * (1 - mu), 0.0, e * V * math.sin(a))),
+        (30, "coulomb", lambda a: (V * math.cos(a) - mu * (1 + e) * V * math.sin(a), 0.0, e * V * math.sin(a))),
+        (80, "coulomb", lambda a: (5.0 / 7.0 * V * math.cos(a), 0.0, e * V * math.sin(a)))]:
+    w = want(math.radians(angle))
+    got = velocities(base + "/angle%d-roughness0-%s" % (angle, law))
+    worst = max(abs(g[c] - w[c]) / V for g in got for c in range(3))
+    print("smooth wall, %s, %d deg: %d grains, largest |U - (%.6f, 0, %.6f)|/V = %.2e (tolerance 1e-12)"
+          % (law, angle, len(got), w[0], w[2], worst))
+    ok = ok and len(got) == 2000 and worst <= 1e-12
 
-for angle in (10, 45):
-    got = velocities(base + "/angle%d-roughness5" % angle)
+for angle, law in ((10, "lossFraction"), (45, "lossFraction"), (10, "coulomb")):
+    got = velocities(base + "/angle%d-roughness5-%s" % (angle, law))
     N = len(got)
     mean = [sum(g[c] for g in got) / N for c in range(3)]
     sd = [math.sqrt(sum((g[c] - mean[c]) ** 2 for g in got) / (N - 1)) for c in range(3)]
-    want, wantSd = model(angle, 5)
-    plain, plainSd = model(angle, 5, shadow=False)
-    print("roughness 5 deg, impact angle %d deg, %d grains (model; without the shadow weighting):" % (angle, N))
+    want, wantSd = model(angle, 5, law)
+    plain, plainSd = model(angle, 5, law, shadow=False)
+    print("roughness 5 deg, %s, impact angle %d deg, %d grains (model; without the shadow weighting):"
+          % (law, angle, N))
     ok = ok and N == 2000
     checks = [("mean U%s" % "xyz"[c], mean[c], want[c], plain[c], sd[c] / math.sqrt(N)) for c in range(3)]
     # the standard error of a standard deviation from the sample's

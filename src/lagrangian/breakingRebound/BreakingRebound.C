@@ -70,6 +70,25 @@ Foam::scalar Foam::BreakingRebound<CloudType>::readRoughness
 
 
 template<class CloudType>
+bool Foam::BreakingRebound<CloudType>::readCoulomb(const dictionary& coeffs)
+{
+    const word law(coeffs.getOrDefault<word>("tangential", "lossFraction"));
+    if (law != "lossFraction" && law != "coulomb")
+    {
+        FatalIOErrorInFunction(coeffs)
+            << "'tangential " << law << "' in " << coeffs.name()
+            << ": valid choices are lossFraction (every impact loses the"
+            << " fraction mu of the tangential velocity: OpenFOAM's"
+            << " standardWallInteraction) and coulomb (mu the friction"
+            << " coefficient: a sliding impact loses mu (1 + e) Un, one"
+            << " that sticks 2/7 of its tangential velocity)" << nl
+            << exit(FatalIOError);
+    }
+    return law == "coulomb";
+}
+
+
+template<class CloudType>
 Foam::vector Foam::BreakingRebound<CloudType>::rebound
 (
     const vector& U,
@@ -77,7 +96,24 @@ Foam::vector Foam::BreakingRebound<CloudType>::rebound
 ) const
 {
     const scalar Un = U & n;
-    return U - (1 + e_)*Un*n - mu_*(U - Un*n);
+    const vector Ut = U - Un*n;
+    if (!coulomb_)
+    {
+        return U - (1 + e_)*Un*n - mu_*Ut;
+    }
+
+    // A sphere's impact with Coulomb friction, its spin not carried:
+    // the contact slides when the tangential impulse that would stop it
+    // rolling, 2/7 m Ut, exceeds mu times the normal impulse, mu m (1 + e)
+    // Un; it then loses mu (1 + e) Un of its tangential speed, else it
+    // rolls off with 5/7 of it
+    const scalar sliding = mu_*(1 + e_)*Un;
+    const scalar magUt = mag(Ut);
+    const vector UtAfter =
+        magUt > 3.5*sliding
+      ? (1 - sliding/magUt)*Ut
+      : (5.0/7.0)*Ut;
+    return UtAfter - e_*Un*n;
 }
 
 
@@ -272,6 +308,7 @@ Foam::BreakingRebound<CloudType>::BreakingRebound
     PatchInteractionModel<CloudType>(dict, cloud, typeName),
     e_(this->coeffDict().template get<scalar>("e")),
     mu_(this->coeffDict().template get<scalar>("mu")),
+    coulomb_(readCoulomb(this->coeffDict())),
     roughness_(readRoughness(this->coeffDict())),
     smoothFallbacks_(0),
     startTime_(this->coeffDict().getOrDefault("startTime", scalar(0))),
@@ -315,6 +352,7 @@ Foam::BreakingRebound<CloudType>::BreakingRebound
     PatchInteractionModel<CloudType>(pim),
     e_(pim.e_),
     mu_(pim.mu_),
+    coulomb_(pim.coulomb_),
     roughness_(pim.roughness_),
     smoothFallbacks_(pim.smoothFallbacks_),
     startTime_(pim.startTime_),
@@ -398,14 +436,21 @@ bool Foam::BreakingRebound<CloudType>::correct
             // The rebound from the wall's local inclination
             U = rebound(U, roughNormal(U, nw));
         }
+        else if (coulomb_)
+        {
+            U = rebound(U, nw);
+        }
         else
         {
             U -= (1 + e_)*Un*nw;
             U -= mu_*Ut;
         }
     }
-    else
+    else if (!coulomb_)
     {
+        // A parcel on the wall that does not move into it: the loss
+        // fraction still applies (standardWallInteraction's rebound);
+        // without a normal impulse Coulomb friction has nothing to act on
         U -= mu_*Ut;
     }
     U += Up;
