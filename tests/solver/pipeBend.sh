@@ -622,12 +622,12 @@ PY
 #     exactly the gas's) and the fed mass flow loading rhoGas U A of the
 #     snapped inlet's area A (its faces' areas, from the mesh) to 1e-3
 #   - the pass carried that product (its product file: rho0 1100, e 0.7,
-#     mu 0.2, roughness 0: none given) and the mesh is 100 mm across (checkMesh's bounding box)
+#     mu 0.2, tangential lossFraction and roughness 0: none given) and the mesh is 100 mm across (checkMesh's bounding box)
 #   - the solids balance per run to 1e-10 (tests/solver/pipeBend/balance.py)
 # Refused before anything runs, with the file and entry named and no stage
 # made: classes of two densities, a feed naming a class that is not a
-# species, feed fractions not summing to 1, a negative wall roughness,
-# particlePassCoeffs pipeDiameter
+# species, feed fractions not summing to 1, a negative wall roughness, a
+# tangential law that is not one, particlePassCoeffs pipeDiameter
 # other than -D; and a pass whose kinematicCloudProperties hard-codes
 # another rho0 than granularProperties stops at its first parcel naming both
 test_pipe_bend_another_product()
@@ -691,7 +691,7 @@ ok = (names == ["d3mm", "d1500um", "d750um", "dust"]
       and abs(total / expected - 1) < 1e-3
       and abs(hi[2] - lo[2] - 0.1) < 1e-4
       and float(product["rho0"]) == 1100 and float(product["e"]) == 0.7 and float(product["mu"]) == 0.2
-      and float(product["roughness"]) == 0
+      and float(product["roughness"]) == 0 and product["tangential"] == "lossFraction"
       and float(rows[names.index("d750um")][3]) > 0)
 sys.exit(0 if ok else 1)
 PY
@@ -732,6 +732,11 @@ PY
 p = case + "/constant/granularProperties"
 text = open(p).read()
 open(p, "w").write(text.replace("wallContact { e 0.7; mu 0.2; }", "wallContact { e 0.7; mu 0.2; roughness -2; }"))
+PY
+    refused tangential "granularProperties: wallContact/tangential stick: valid choices are lossFraction" -D 0.1 <<'PY' || return 1
+p = case + "/constant/granularProperties"
+text = open(p).read()
+open(p, "w").write(text.replace("wallContact { e 0.7; mu 0.2; }", "wallContact { e 0.7; mu 0.2; tangential stick; }"))
 PY
     refused pipeDiameter "particlePassCoeffs/pipeDiameter 0.05 differs from the line's diameter (Allrun -D 0.1" -D 0.1 <<'PY' || return 1
 p = case + "/constant/granularProperties"
