@@ -80,8 +80,8 @@ bool Foam::BreakingRebound<CloudType>::readCoulomb(const dictionary& coeffs)
             << ": valid choices are lossFraction (every impact loses the"
             << " fraction mu of the tangential velocity: OpenFOAM's"
             << " standardWallInteraction) and coulomb (mu the friction"
-            << " coefficient: a sliding impact loses mu (1 + e) Un, one"
-            << " that sticks 2/7 of its tangential velocity)" << nl
+            << " coefficient: a sliding impact loses mu (1 + e) Un of its"
+            << " tangential speed, one that sticks keeps 5/7 of it)" << nl
             << exit(FatalIOError);
     }
     return law == "coulomb";
@@ -103,10 +103,10 @@ Foam::vector Foam::BreakingRebound<CloudType>::rebound
     }
 
     // A sphere's impact with Coulomb friction, its spin not carried:
-    // the contact slides when the tangential impulse that would stop it
-    // rolling, 2/7 m Ut, exceeds mu times the normal impulse, mu m (1 + e)
-    // Un; it then loses mu (1 + e) Un of its tangential speed, else it
-    // rolls off with 5/7 of it
+    // the contact slides when the tangential impulse that would make it
+    // roll (bring the contact point to rest), 2/7 m Ut, exceeds mu times
+    // the normal impulse, mu m (1 + e) Un; it then loses mu (1 + e) Un of
+    // its tangential speed, else it rolls off with 5/7 of it
     const scalar sliding = mu_*(1 + e_)*Un;
     const scalar magUt = mag(Ut);
     const vector UtAfter =
@@ -500,6 +500,11 @@ void Foam::BreakingRebound<CloudType>::info(Ostream& os)
     }
     os  << "      dust volume [m3] "
         << returnReduce(dustVolume_, sumOp<scalar>()) << nl;
+    // After the counters: the readers of the log take the lines of five
+    // entries that follow the header
+    os  << "      wall: e " << e_ << ", mu " << mu_ << ", tangential "
+        << (coulomb_ ? "coulomb" : "lossFraction") << ", roughness "
+        << radToDeg(roughness_) << " deg" << nl;
     if (roughness_ > 0)
     {
         os  << "      rough wall " << radToDeg(roughness_) << " deg: impacts"
