@@ -958,40 +958,33 @@ PY
         blockMesh -case "$dir" > "$dir/log.blockMesh" 2>&1 || { tail -20 "$dir/log.blockMesh"; return 1; }
         icoUncoupledKinematicParcelFoam -case "$dir" > "$dir/log.pass" 2>&1 || { tail -30 "$dir/log.pass"; return 1; }
     done
-    # A roughness outside [0, 45) degrees: the pass stops naming the entry
-    local bad="$base/angle10-roughness50"
-    cp -r "$base/angle10-roughness5-lossFraction" "$bad"
-    sed -i 's/^roughness .*/roughness 50;/' "$bad/constant/impact"
-    if icoUncoupledKinematicParcelFoam -case "$bad" > "$bad/log.pass" 2>&1
-    then
-        echo "roughness 50: accepted"; return 1
-    fi
-    grep -q "'roughness 50' in .*breakingReboundCoeffs.\?: the standard deviation of the wall's inclination, in degrees, lies in \[0, 45)" "$bad/log.pass" \
-        || { tail -20 "$bad/log.pass"; echo "roughness 50: no message naming the entry"; return 1; }
-    grep -m1 "'roughness 50'" "$bad/log.pass"
-    bad="$base/tangentialStick"
-    cp -r "$base/angle10-roughness5-lossFraction" "$bad"
-    sed -i 's/^tangential .*/tangential stick;/' "$bad/constant/impact"
-    if icoUncoupledKinematicParcelFoam -case "$bad" > "$bad/log.pass" 2>&1
-    then
-        echo "tangential stick: accepted"; return 1
-    fi
-    grep -q "'tangential stick' in .*breakingReboundCoeffs.\?: valid choices are lossFraction .* and coulomb" "$bad/log.pass" \
-        || { tail -20 "$bad/log.pass"; echo "tangential stick: no message naming the entry"; return 1; }
-    grep -m1 "'tangential stick'" "$bad/log.pass"
+    # refusedByPass ENTRY VALUE PATTERN: the rough 10-degree run with ENTRY
+    # of its impact file set to VALUE; the pass stops with a message naming
+    # the entry (PATTERN)
+    refusedByPass()
+    {
+        local bad="$base/refused-$1-$2"
+        cp -r "$base/angle10-roughness5-lossFraction" "$bad"
+        sed -i "s/^$1 .*/$1 $2;/" "$bad/constant/impact"
+        if icoUncoupledKinematicParcelFoam -case "$bad" > "$bad/log.pass" 2>&1
+        then
+            echo "$1 $2: accepted"; return 1
+        fi
+        grep -q "'$1 $2' in .*breakingReboundCoeffs.\?: $3" "$bad/log.pass" \
+            || { tail -20 "$bad/log.pass"; echo "$1 $2: no message naming the entry"; return 1; }
+        grep -m1 "'$1 $2'" "$bad/log.pass"
+    }
+    refusedByPass roughness 50 "the standard deviation of the wall's inclination, in degrees, lies in \[0, 45)" || return 1
+    refusedByPass tangential stick "valid choices are lossFraction .* and coulomb" || return 1
     python3 - "$base" <<'PY'
-import math, re, sys
+import math, sys
+from sdfoam.foamcase import readListFile
 base = sys.argv[1]
 V, e, mu = 10.0, 0.8, 0.1
 
 
 def velocities(case):
-    text = open(case + "/0.004/lagrangian/kinematicCloud/U").read()
-    # a list of equal values is written N{value}
-    same = re.search(r"^(\d+)\{\(([^()\s]+) ([^()\s]+) ([^()\s]+)\)\}", text, re.M)
-    if same:
-        return [tuple(map(float, same.groups()[1:]))] * int(same.group(1))
-    return [tuple(map(float, m)) for m in re.findall(r"\(([^()\s]+) ([^()\s]+) ([^()\s]+)\)", text)]
+    return readListFile(case + "/0.004/lagrangian/kinematicCloud/U", 3)
 
 
 def rebound(U, n, law):

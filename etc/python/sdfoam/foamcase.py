@@ -147,10 +147,16 @@ def _readInternal(path, ncomp, ncells=None):
     raise ValueError("cannot parse internalField of %s" % path)
 
 
+def readListFile(path, ncomp):
+    """The list a file holds whole (a mesh's owner, a cloud's field such
+    as <time>/lagrangian/<cloud>/U): floats (ncomp 1) or tuples, from
+    'N ( ... )' or the uniform short form 'N{value}'."""
+    vals, _ = _readList(_body(path), 0, ncomp)
+    return vals
+
+
 def _readLabelList(path):
-    text = _body(path)
-    vals, _ = _readList(text, 0, 1)
-    return [int(v) for v in vals]
+    return [int(v) for v in readListFile(path, 1)]
 
 
 def _meshDir(case):

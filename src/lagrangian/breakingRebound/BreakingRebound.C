@@ -118,7 +118,7 @@ Foam::vector Foam::BreakingRebound<CloudType>::rebound
 
 
 template<class CloudType>
-Foam::vector Foam::BreakingRebound<CloudType>::roughNormal
+Foam::vector Foam::BreakingRebound<CloudType>::roughRebound
 (
     const vector& U,
     const vector& nw
@@ -155,20 +155,20 @@ Foam::vector Foam::BreakingRebound<CloudType>::roughNormal
             continue;
         }
         const vector n = normalised(nw + ::tan(inPlane)*t + ::tan(across)*b);
-        if
-        (
-            rnd.template sample01<scalar>() < (Uhat & n)
-         && (rebound(U, n) & nw) < 0
-        )
+        if (rnd.template sample01<scalar>() < (Uhat & n))
         {
-            return n;
+            const vector Uafter = rebound(U, n);
+            if ((Uafter & nw) < 0)
+            {
+                return Uafter;
+            }
         }
     }
     // No tilt kept in 1000 draws: a grazing impact (a grain sliding along
     // the wall) on a wall so smooth that hardly any facet faces it; the
     // smooth wall's rebound, counted (info)
     ++smoothFallbacks_;
-    return nw;
+    return rebound(U, nw);
 }
 
 
@@ -434,7 +434,7 @@ bool Foam::BreakingRebound<CloudType>::correct
         if (roughness_ > 0)
         {
             // The rebound from the wall's local inclination
-            U = rebound(U, roughNormal(U, nw));
+            U = roughRebound(U, nw);
         }
         else if (coulomb_)
         {
