@@ -7,7 +7,8 @@
 // all laws; the force pass is instantiated per law and withContactModel picks the law once
 // per pass, so the pair loop holds no branch on the model.
 //
-// A new law: a policy with the same static members, an enumerator in ContactModel (and its
+// A new law: a policy with the same static members (at() from the four constants
+// stiffnessConstants() picks, so that batched contacts carry them: ContactBatch.hpp), an enumerator in ContactModel (and its
 // name in contactModelFromName/contactModelName), its coefficients in PairCoefficients
 // (ContactLaw::makeCoefficients), its time step (ContactLaw::contactDuration,
 // maximumTimeStep), its settings check (validateContactSettings) and one case in
@@ -15,6 +16,7 @@
 
 #include "ContactLaw.hpp"
 
+#include <array>
 #include <cmath>
 #include <stdexcept>
 
@@ -37,9 +39,20 @@ struct LinearSpringDashpot
 {
     static constexpr ContactModel model = ContactModel::linearSpringDashpot;
 
+    //- The four constants at() reads, carried per contact by a ContactBatch.
+    static std::array<double, 4> stiffnessConstants(const PairCoefficients& c)
+    {
+        return {c.kn, c.gammaN, c.kt, c.gammaT};
+    }
+
+    static ContactStiffness at(const std::array<double, 4>& k, double delta)
+    {
+        return {k[0]*delta, k[1], k[2], k[3]};
+    }
+
     static ContactStiffness at(const PairCoefficients& c, double delta)
     {
-        return {c.kn*delta, c.gammaN, c.kt, c.gammaT};
+        return at(stiffnessConstants(c), delta);
     }
 
     static double limitNormalForce(double fn) { return fn; }
@@ -61,11 +74,21 @@ struct HertzMindlin
 {
     static constexpr ContactModel model = ContactModel::hertzMindlin;
 
-    static ContactStiffness at(const PairCoefficients& c, double delta)
+    static std::array<double, 4> stiffnessConstants(const PairCoefficients& c)
+    {
+        return {c.hertzK, c.hertzDamp, c.mindlinK, c.mindlinDamp};
+    }
+
+    static ContactStiffness at(const std::array<double, 4>& k, double delta)
     {
         const double sd = std::sqrt(delta);
         const double qd = std::sqrt(sd);
-        return {c.hertzK*delta*sd, c.hertzDamp*qd, c.mindlinK*sd, c.mindlinDamp*qd};
+        return {k[0]*delta*sd, k[1]*qd, k[2]*sd, k[3]*qd};
+    }
+
+    static ContactStiffness at(const PairCoefficients& c, double delta)
+    {
+        return at(stiffnessConstants(c), delta);
     }
 
     static double limitNormalForce(double fn) { return fn < 0 ? 0 : fn; }

@@ -103,6 +103,7 @@ Simulation::Simulation
     particles_(std::move(particles)),
     box_(box)
 {
+    batchedContacts_ = settings_.batchedContacts && !hasRollingResistance(settings_.contact);
     const int n = int(particles_.size());
     const int nSpecies = int(species_.size());
     for (int i = 0; i < n; ++i)

@@ -21,6 +21,7 @@
 #include "Barostat.hpp"
 #include "BlockBalance.hpp"
 #include "CellStatistics.hpp"
+#include "ContactBatch.hpp"
 #include "ContactForce.hpp"
 #include "ContactLaw.hpp"
 #include "Driving.hpp"
@@ -58,6 +59,10 @@ struct SimulationSettings
     double targetPressure = 0;
     double barostatTime = 0;               // tau_p [s]; 0: automatic (Barostat.hpp)
     double maxOverlapFraction = 0.1;       // stop when delta/d_min exceeds this (<= 0: off)
+    //- Evaluate the touching pairs as one batch (ContactBatch.hpp; not with rolling
+    //  resistance); false: contact by contact, the reference the batch is tested against.
+    //  The results are the same bits either way.
+    bool batchedContacts = true;
     double energyBlowUpFactor = 1e3;       // stop when E_kin > factor x reference
     bool checkTimeStep = true;             // refuse dt above the recommended maximum
     int threads = 0;                       // OpenMP threads; 0: runtime default
@@ -224,6 +229,25 @@ private:
     //- One block's touching pairs through the contact law, from the last to the first.
     template<class Law>
     double evaluateTouchingPairs(int block, int nContacts);
+    //- The same with the block's ContactBatch (no rolling resistance).
+    template<class Law>
+    double evaluateContactsInBatch(int block, int nContacts);
+    //- The same contact by contact (rolling resistance; the batch's reference).
+    template<class Law>
+    double evaluateContactsOneByOne(int block, int nContacts);
+    //- One block's touching pairs into its ContactBatch, evaluated there.
+    template<class Law>
+    void gatherContactBatch(int block, int nContacts);
+    //- Adds one contact's force and torque sums to i and to j (or j's to the cross list).
+    void addContact(int block, int i, int j, const double* force, const double* torqueSumI,
+                    const double* torqueSumJ);
+    //- Counts a new contact's impact energy in the block's collision statistics.
+    void recordImpact(int block, int i, int j, double normalVelocity);
+    struct ContactSeparation;
+    //- v^{n+1/2} + dt/2 F^n/m and the spins' likewise for particles [begin, end).
+    void synchronisedVelocities(int begin, int end);
+    //- The kinematics of pair (i, j) at this force evaluation.
+    ContactKinematics contactKinematics(int i, int j, const ContactSeparation& r) const;
     //- Adds the lower blocks' cross contacts to the particles [begin, end).
     void addCrossContacts(int begin, int end);
     //- Torque from the sum of n x F_t and, if kick, the second half kick, for particles
@@ -308,6 +332,9 @@ private:
     // image's branches)
     struct ContactSeparation { double dx, dy, dz, shiftVx; };
     std::vector<CacheLinePadded<std::vector<ContactSeparation>>> blockSeparations_;
+    // per block: its touching pairs as a batch for the contact law (without rolling resistance)
+    std::vector<CacheLinePadded<ContactBatch>> blockBatches_;
+    bool batchedContacts_ = true;   // false: contact by contact (rolling resistance, or set so)
     // per block: its touching pairs whose second particle j lies in a higher block, in
     // decreasing pair order, with their force on i and j's torque sum (n x F_t, and the
     // rolling part; ContactResult::torqueSumJ) (added by j's owner after
@@ -318,6 +345,8 @@ private:
     // forces and torques of the previous evaluation (F^n) during a force pass, for the
     // synchronised velocity estimates v^{n+1/2} + dt/2 F^n/m (swapped with Particles::fx..tz)
     ParticleArray fPrevX_, fPrevY_, fPrevZ_, tPrevX_, tPrevY_, tPrevZ_;
+    // the synchronised velocities and spins formed from them, per particle, for the pass
+    ParticleArray vSyncX_, vSyncY_, vSyncZ_, wSyncX_, wSyncY_, wSyncZ_;
     // Particles::u at the last list build (u - uBuild: the peculiar displacement since,
     // for the rebuild criterion)
     ParticleArray uBuildX_, uBuildY_, uBuildZ_;

@@ -46,6 +46,13 @@ void Simulation::computeForces(bool checkDisplacements, bool halfKick)
         {
             for (auto* a : {&q.fx, &q.fy, &q.fz, &q.tx, &q.ty, &q.tz}) a->assign(q.size(), 0.0);
         }
+        if (vSyncX_.size() != q.size())
+        {
+            for (auto* a : {&vSyncX_, &vSyncY_, &vSyncZ_, &wSyncX_, &wSyncY_, &wSyncZ_})
+            {
+                a->assign(q.size(), 0.0);
+            }
+        }
         if (!halfKick)
         {
             for (auto* a : {&fPrevX_, &fPrevY_, &fPrevZ_, &tPrevX_, &tPrevY_, &tPrevZ_})
@@ -120,6 +127,14 @@ double Simulation::pairForcePass(bool rebuildNear, bool kickHere, bool finishSum
         nThreads_, 0.0,
         [&](int thread, int team, std::array<double, 1>& localMax)
         {
+            for (int b = thread; b < nBlocks; b += team)
+            {
+                synchronisedVelocities(blockParticle_[b], blockParticle_[b + 1]);
+            }
+            if (nBlocks > 1)
+            {
+                #pragma omp barrier
+            }
             for (int b = thread; b < nBlocks; b += team)
             {
                 const double busyStart = balance ? wallSeconds() : 0;
@@ -226,90 +241,328 @@ int Simulation::findTouchingPairs(int b, bool rebuildNear)
     return nContacts;
 }
 
+SDF_DEM_ALWAYS_INLINE ContactKinematics Simulation::contactKinematics
+(
+    int i, int j, const ContactSeparation& r
+) const
+{
+    const Particles& p = particles_;
+    const double shiftVx = r.shiftVx;
+    ContactKinematics kin;
+    kin.r[0] = r.dx; kin.r[1] = r.dy; kin.r[2] = r.dz;
+    kin.radiusI = p.radius[i]; kin.radiusJ = p.radius[j];
+    kin.dvHalf[0] = p.vx[i] - p.vx[j] + shiftVx;
+    kin.dvHalf[1] = p.vy[i] - p.vy[j];
+    kin.dvHalf[2] = p.vz[i] - p.vz[j];
+    kin.dvSync[0] = vSyncX_[i] - vSyncX_[j] + shiftVx;
+    kin.dvSync[1] = vSyncY_[i] - vSyncY_[j];
+    kin.dvSync[2] = vSyncZ_[i] - vSyncZ_[j];
+    kin.wHalfI[0] = p.wx[i]; kin.wHalfI[1] = p.wy[i]; kin.wHalfI[2] = p.wz[i];
+    kin.wHalfJ[0] = p.wx[j]; kin.wHalfJ[1] = p.wy[j]; kin.wHalfJ[2] = p.wz[j];
+    kin.wSyncI[0] = wSyncX_[i]; kin.wSyncI[1] = wSyncY_[i]; kin.wSyncI[2] = wSyncZ_[i];
+    kin.wSyncJ[0] = wSyncX_[j]; kin.wSyncJ[1] = wSyncY_[j]; kin.wSyncJ[2] = wSyncZ_[j];
+    return kin;
+}
+
+void Simulation::synchronisedVelocities(int begin, int end)
+{
+    // v^{n+1/2} + dt/2 F^n/m and the spins' likewise, once per particle (a contact reads
+    // them for both of its particles)
+    const Particles& p = particles_;
+    const double h = 0.5*dt_;
+    for (int i = begin; i < end; ++i)
+    {
+        const double im = p.invMass[i], ii = p.invInertia[i];
+        vSyncX_[i] = p.vx[i] + h*fPrevX_[i]*im;
+        vSyncY_[i] = p.vy[i] + h*fPrevY_[i]*im;
+        vSyncZ_[i] = p.vz[i] + h*fPrevZ_[i]*im;
+        wSyncX_[i] = p.wx[i] + h*tPrevX_[i]*ii;
+        wSyncY_[i] = p.wy[i] + h*tPrevY_[i]*ii;
+        wSyncZ_[i] = p.wz[i] + h*tPrevZ_[i]*ii;
+    }
+}
+
+template<class Law>
+void Simulation::gatherContactBatch(int b, int nContacts)
+{
+    // contactKinematics' values, gathered in short loops (each with few streams, so that
+    // their pointers stay in registers)
+    const Particles& p = particles_;
+    ContactBatch& batch = blockBatches_[b];
+    batch.reserveFor(nContacts);
+    batch.unbatched.clear();
+    batch.unbatchedHistory.clear();
+    int* __restrict ci = batch.particleI.data();
+    int* __restrict cj = batch.particleJ.data();
+    {
+        const int* __restrict first = list_.first().data();
+        const int* __restrict second = list_.second().data();
+        const int* __restrict contacts = blockContacts_[b].data();
+        const ContactSeparation* __restrict separations = blockSeparations_[b].data();
+        const double* __restrict radius = p.radius.data();
+        double* __restrict rx = batch.rx.data();
+        double* __restrict ry = batch.ry.data();
+        double* __restrict rz = batch.rz.data();
+        double* __restrict shift = batch.shiftVx.data();
+        double* __restrict radiusI = batch.radiusI.data();
+        double* __restrict radiusJ = batch.radiusJ.data();
+        for (int c = 0; c < nContacts; ++c)
+        {
+            const int k = contacts[c];
+            const int i = first[k], j = second[k];
+            ci[c] = i; cj[c] = j;
+            rx[c] = separations[c].dx; ry[c] = separations[c].dy; rz[c] = separations[c].dz;
+            if (rx[c]*rx[c] + ry[c]*ry[c] + rz[c]*rz[c] == 0)
+            {
+                // coincident centres: no normal; left to evaluateContact, its history
+                // kept as it is now
+                batch.unbatched.push_back(c);
+                batch.unbatchedHistory.push_back(history_[k]);
+            }
+            shift[c] = separations[c].shiftVx;
+            radiusI[c] = radius[i]; radiusJ[c] = radius[j];
+        }
+    }
+    // relative velocities: (v_i - v_j) + the Lees-Edwards shift
+    const auto relative = [&](const ParticleArray& v, std::vector<double>& out, bool shifted)
+    {
+        const double* __restrict a = v.data();
+        const double* __restrict shift = batch.shiftVx.data();
+        double* __restrict o = out.data();
+        if (shifted) for (int c = 0; c < nContacts; ++c) o[c] = a[ci[c]] - a[cj[c]] + shift[c];
+        else for (int c = 0; c < nContacts; ++c) o[c] = a[ci[c]] - a[cj[c]];
+    };
+    relative(p.vx, batch.dvHalfX, true);
+    relative(p.vy, batch.dvHalfY, false);
+    relative(p.vz, batch.dvHalfZ, false);
+    relative(vSyncX_, batch.dvSyncX, true);
+    relative(vSyncY_, batch.dvSyncY, false);
+    relative(vSyncZ_, batch.dvSyncZ, false);
+    // spins of both particles
+    const auto both = [&](const ParticleArray& w, std::vector<double>& outI, std::vector<double>& outJ)
+    {
+        const double* __restrict a = w.data();
+        double* __restrict oi = outI.data();
+        double* __restrict oj = outJ.data();
+        for (int c = 0; c < nContacts; ++c) { oi[c] = a[ci[c]]; oj[c] = a[cj[c]]; }
+    };
+    both(p.wx, batch.wHalfIX, batch.wHalfJX);
+    both(p.wy, batch.wHalfIY, batch.wHalfJY);
+    both(p.wz, batch.wHalfIZ, batch.wHalfJZ);
+    both(wSyncX_, batch.wSyncIX, batch.wSyncJX);
+    both(wSyncY_, batch.wSyncIY, batch.wSyncJY);
+    both(wSyncZ_, batch.wSyncIZ, batch.wSyncJZ);
+    // the pair's constants
+    {
+        const int* __restrict species = p.species.data();
+        double* __restrict k0 = batch.constant0.data();
+        double* __restrict k1 = batch.constant1.data();
+        double* __restrict k2 = batch.constant2.data();
+        double* __restrict k3 = batch.constant3.data();
+        double* __restrict mu = batch.friction.data();
+        for (int c = 0; c < nContacts; ++c)
+        {
+            const PairCoefficients& coeffs = law_.pair(species[ci[c]], species[cj[c]]);
+            const std::array<double, 4> constants = Law::stiffnessConstants(coeffs);
+            k0[c] = constants[0]; k1[c] = constants[1]; k2[c] = constants[2]; k3[c] = constants[3];
+            mu[c] = coeffs.friction;
+        }
+    }
+    // the history
+    {
+        const int* __restrict contacts = blockContacts_[b].data();
+        const ContactHistory* __restrict history = history_.data();
+        double* __restrict touching = batch.touching.data();
+        double* __restrict ftx = batch.ftX.data();
+        double* __restrict fty = batch.ftY.data();
+        double* __restrict ftz = batch.ftZ.data();
+        double* __restrict nx = batch.nX.data();
+        double* __restrict ny = batch.nY.data();
+        double* __restrict nz = batch.nZ.data();
+        for (int c = 0; c < nContacts; ++c)
+        {
+            const ContactHistory& h = history[contacts[c]];
+            touching[c] = h.touching ? 1.0 : 0.0;
+            ftx[c] = h.ft[0]; fty[c] = h.ft[1]; ftz[c] = h.ft[2];
+            nx[c] = h.n[0]; ny[c] = h.n[1]; nz[c] = h.n[2];
+        }
+    }
+    evaluateContactBatch(Law::model, batch, nContacts, dt_);
+}
+
 template<class Law>
 double Simulation::evaluateTouchingPairs(int b, int nContacts)
 {
+    blockCross_[b].clear();
+    // without rolling resistance the contact law runs over the block's contacts at once
+    // (ContactBatch.hpp: the same bits as contact by contact)
+    return batchedContacts_ ? evaluateContactsInBatch<Law>(b, nContacts)
+                            : evaluateContactsOneByOne<Law>(b, nContacts);
+}
+
+SDF_DEM_ALWAYS_INLINE void Simulation::addContact
+(
+    int b, int i, int j, const double* force, const double* torqueSumI, const double* torqueSumJ
+)
+{
     Particles& p = particles_;
+    p.fx[i] += force[0]; p.fy[i] += force[1]; p.fz[i] += force[2];
+    p.tx[i] += torqueSumI[0]; p.ty[i] += torqueSumI[1]; p.tz[i] += torqueSumI[2];
+    if (j < blockParticle_[b + 1])
+    {
+        p.fx[j] -= force[0]; p.fy[j] -= force[1]; p.fz[j] -= force[2];
+        p.tx[j] += torqueSumJ[0]; p.ty[j] += torqueSumJ[1]; p.tz[j] += torqueSumJ[2];
+    }
+    else
+    {
+        blockCross_[b].push_back
+        ({
+            j,
+            {force[0], force[1], force[2]},
+            {torqueSumJ[0], torqueSumJ[1], torqueSumJ[2]}
+        });
+    }
+}
+
+SDF_DEM_ALWAYS_INLINE void Simulation::recordImpact
+(
+    int b, int i, int j, double normalVelocity
+)
+{
+    const Particles& p = particles_;
+    const int si = p.species[i], sj = p.species[j];
+    const int sp = speciesPairIndex(si, sj, int(species_.size()));
+    const double e = 0.5*law_.pair(si, sj).effectiveMass*normalVelocity*normalVelocity;
+    blockImpacts_[b].push_back({sp, e});
+    ++blockHist_[b][sp*(int(collisions_.binEdges.size()) + 1) + collisions_.bin(e)];
+}
+
+template<class Law>
+double Simulation::evaluateContactsOneByOne(int b, int nContacts)
+{
+    const Particles& p = particles_;
     const int* first = list_.first().data();
     const int* second = list_.second().data();
-    const int nSpecies = int(species_.size());
-    const double dt = dt_;
-    const double h = 0.5*dt_;
-    const double* fPrevX = fPrevX_.data();
-    const double* fPrevY = fPrevY_.data();
-    const double* fPrevZ = fPrevZ_.data();
-    const double* tPrevX = tPrevX_.data();
-    const double* tPrevY = tPrevY_.data();
-    const double* tPrevZ = tPrevZ_.data();
-    const int nHist = collisionsEnabled_ ? int(collisions_.binEdges.size()) + 1 : 0;
-    std::vector<long>& hist = blockHist_[b];
-    std::vector<CollisionRecord>& impacts = blockImpacts_[b];
     const std::vector<int>& contacts = blockContacts_[b];
     const std::vector<ContactSeparation>& separations = blockSeparations_[b];
-    const int ownEnd = blockParticle_[b + 1];
-    std::vector<CrossContact>& cross = blockCross_[b];
-    cross.clear();
     double maxOverlap = 0;
     for (int c = nContacts - 1; c >= 0; --c)
     {
         const int k = contacts[c];
         const int i = first[k], j = second[k];
-        const ContactSeparation& r = separations[c];
-        const double shiftVx = r.shiftVx;
-        const double ri = p.radius[i], rj = p.radius[j];
         active_[k] = 1;
-        ContactKinematics kin;
-        kin.r[0] = r.dx; kin.r[1] = r.dy; kin.r[2] = r.dz;
-        kin.radiusI = ri; kin.radiusJ = rj;
-        kin.dvHalf[0] = p.vx[i] - p.vx[j] + shiftVx;
-        kin.dvHalf[1] = p.vy[i] - p.vy[j];
-        kin.dvHalf[2] = p.vz[i] - p.vz[j];
-        const double imi = p.invMass[i], imj = p.invMass[j];
-        const double iii = p.invInertia[i], iij = p.invInertia[j];
-        kin.dvSync[0] = (p.vx[i] + h*fPrevX[i]*imi) - (p.vx[j] + h*fPrevX[j]*imj) + shiftVx;
-        kin.dvSync[1] = (p.vy[i] + h*fPrevY[i]*imi) - (p.vy[j] + h*fPrevY[j]*imj);
-        kin.dvSync[2] = (p.vz[i] + h*fPrevZ[i]*imi) - (p.vz[j] + h*fPrevZ[j]*imj);
-        kin.wHalfI[0] = p.wx[i]; kin.wHalfI[1] = p.wy[i]; kin.wHalfI[2] = p.wz[i];
-        kin.wHalfJ[0] = p.wx[j]; kin.wHalfJ[1] = p.wy[j]; kin.wHalfJ[2] = p.wz[j];
-        kin.wSyncI[0] = p.wx[i] + h*tPrevX[i]*iii;
-        kin.wSyncI[1] = p.wy[i] + h*tPrevY[i]*iii;
-        kin.wSyncI[2] = p.wz[i] + h*tPrevZ[i]*iii;
-        kin.wSyncJ[0] = p.wx[j] + h*tPrevX[j]*iij;
-        kin.wSyncJ[1] = p.wy[j] + h*tPrevY[j]*iij;
-        kin.wSyncJ[2] = p.wz[j] + h*tPrevZ[j]*iij;
-
-        const int si = p.species[i], sj = p.species[j];
-        const PairCoefficients& coeffs = law_.pair(si, sj);
-        const ContactResult res = evaluateContact<Law>(coeffs, kin, history_[k], dt);
-
+        const PairCoefficients& coeffs = law_.pair(p.species[i], p.species[j]);
+        const ContactResult res = evaluateContact<Law>
+        (
+            coeffs, contactKinematics(i, j, separations[c]), history_[k], dt_
+        );
         pfx_[k] = res.force[0]; pfy_[k] = res.force[1]; pfz_[k] = res.force[2];
         pcx_[k] = res.nCrossFt[0]; pcy_[k] = res.nCrossFt[1]; pcz_[k] = res.nCrossFt[2];
-        p.fx[i] += res.force[0]; p.fy[i] += res.force[1]; p.fz[i] += res.force[2];
-        p.tx[i] += res.torqueSumI[0]; p.ty[i] += res.torqueSumI[1]; p.tz[i] += res.torqueSumI[2];
-        if (j < ownEnd)
-        {
-            p.fx[j] -= res.force[0]; p.fy[j] -= res.force[1]; p.fz[j] -= res.force[2];
-            p.tx[j] += res.torqueSumJ[0]; p.ty[j] += res.torqueSumJ[1]; p.tz[j] += res.torqueSumJ[2];
-        }
-        else
-        {
-            cross.push_back
-            ({
-                j,
-                {res.force[0], res.force[1], res.force[2]},
-                {res.torqueSumJ[0], res.torqueSumJ[1], res.torqueSumJ[2]}
-            });
-        }
-
-        const double frac = res.overlap/(2*std::min(ri, rj));
+        addContact(b, i, j, res.force, res.torqueSumI, res.torqueSumJ);
+        const double frac = res.overlap/(2*std::min(p.radius[i], p.radius[j]));
         if (frac > maxOverlap) maxOverlap = frac;
+        if (collisionsEnabled_ && res.newContact) recordImpact(b, i, j, res.normalVelocity);
+    }
+    return maxOverlap;
+}
 
-        if (collisionsEnabled_ && res.newContact)
+template<class Law>
+double Simulation::evaluateContactsInBatch(int b, int nContacts)
+{
+    // in short loops, each with few streams (their pointers stay in registers)
+    gatherContactBatch<Law>(b, nContacts);
+    ContactBatch& batch = blockBatches_[b];
+    const int* __restrict contacts = blockContacts_[b].data();
+    // the slots the stress sampling reads, and the history (a pair is listed once)
+    {
+        const double* __restrict fx = batch.forceX.data();
+        const double* __restrict fy = batch.forceY.data();
+        const double* __restrict fz = batch.forceZ.data();
+        const double* __restrict cx = batch.nCrossFtX.data();
+        const double* __restrict cy = batch.nCrossFtY.data();
+        const double* __restrict cz = batch.nCrossFtZ.data();
+        for (int c = 0; c < nContacts; ++c)
         {
-            const int sp = speciesPairIndex(si, sj, nSpecies);
-            const double e = 0.5*coeffs.effectiveMass*res.normalVelocity*res.normalVelocity;
-            impacts.push_back({sp, e});
-            ++hist[sp*nHist + collisions_.bin(e)];
+            const int k = contacts[c];
+            pfx_[k] = fx[c]; pfy_[k] = fy[c]; pfz_[k] = fz[c];
+            pcx_[k] = cx[c]; pcy_[k] = cy[c]; pcz_[k] = cz[c];
+        }
+    }
+    {
+        const double* __restrict touching = batch.touching.data();
+        const double* __restrict ftx = batch.ftX.data();
+        const double* __restrict fty = batch.ftY.data();
+        const double* __restrict ftz = batch.ftZ.data();
+        const double* __restrict nx = batch.nX.data();
+        const double* __restrict ny = batch.nY.data();
+        const double* __restrict nz = batch.nZ.data();
+        unsigned char* __restrict active = active_.data();
+        ContactHistory* __restrict history = history_.data();
+        for (int c = 0; c < nContacts; ++c)
+        {
+            const int k = contacts[c];
+            active[k] = 1;
+            ContactHistory& h = history[k];
+            if (touching[c] == 0) h.xr[0] = h.xr[1] = h.xr[2] = 0;
+            h.ft[0] = ftx[c]; h.ft[1] = fty[c]; h.ft[2] = ftz[c];
+            h.n[0] = nx[c]; h.n[1] = ny[c]; h.n[2] = nz[c];
+            h.touching = true;
+        }
+    }
+    // what the batch does not take: contact by contact, over the batch's results
+    for (std::size_t u = 0; u < batch.unbatched.size(); ++u)
+    {
+        const int c = batch.unbatched[u];
+        const int k = contacts[c];
+        const int i = batch.particleI[c], j = batch.particleJ[c];
+        ContactHistory& h = history_[k];
+        h = batch.unbatchedHistory[u];
+        const ContactResult res = evaluateContact<Law>
+        (
+            law_.pair(particles_.species[i], particles_.species[j]),
+            contactKinematics(i, j, blockSeparations_[b][c]), h, dt_
+        );
+        batch.forceX[c] = res.force[0]; batch.forceY[c] = res.force[1]; batch.forceZ[c] = res.force[2];
+        batch.nCrossFtX[c] = res.nCrossFt[0];
+        batch.nCrossFtY[c] = res.nCrossFt[1];
+        batch.nCrossFtZ[c] = res.nCrossFt[2];
+        batch.overlap[c] = res.overlap;
+        batch.overlapFraction[c] = res.overlap/(2*std::min(particles_.radius[i], particles_.radius[j]));
+        batch.normalVelocity[c] = res.normalVelocity;
+        batch.touching[c] = res.newContact ? 0.0 : 1.0;
+        pfx_[k] = res.force[0]; pfy_[k] = res.force[1]; pfz_[k] = res.force[2];
+        pcx_[k] = res.nCrossFt[0]; pcy_[k] = res.nCrossFt[1]; pcz_[k] = res.nCrossFt[2];
+    }
+    // the particles' sums, in decreasing pair order
+    {
+        const int* __restrict ci = batch.particleI.data();
+        const int* __restrict cj = batch.particleJ.data();
+        const double* __restrict fx = batch.forceX.data();
+        const double* __restrict fy = batch.forceY.data();
+        const double* __restrict fz = batch.forceZ.data();
+        const double* __restrict cx = batch.nCrossFtX.data();
+        const double* __restrict cy = batch.nCrossFtY.data();
+        const double* __restrict cz = batch.nCrossFtZ.data();
+        for (int c = nContacts - 1; c >= 0; --c)
+        {
+            const double force[3] = {fx[c], fy[c], fz[c]};
+            const double torqueSum[3] = {cx[c], cy[c], cz[c]};
+            addContact(b, ci[c], cj[c], force, torqueSum, torqueSum);
+        }
+    }
+    double maxOverlap = 0;
+    {
+        const double* __restrict fraction = batch.overlapFraction.data();
+        for (int c = 0; c < nContacts; ++c) maxOverlap = std::max(maxOverlap, fraction[c]);
+    }
+    if (collisionsEnabled_)
+    {
+        for (int c = nContacts - 1; c >= 0; --c)
+        {
+            if (batch.touching[c] == 0)
+            {
+                recordImpact(b, batch.particleI[c], batch.particleJ[c], batch.normalVelocity[c]);
+            }
         }
     }
     return maxOverlap;

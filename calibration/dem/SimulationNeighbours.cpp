@@ -151,6 +151,7 @@ void Simulation::partitionWork()
     blockImpacts_.resize(nBlocks);
     blockContacts_.resize(nBlocks);
     blockSeparations_.resize(nBlocks);
+    blockBatches_.resize(nBlocks);
     blockCross_.resize(nBlocks);
     nearPairs_.resize(nBlocks);
 }
