@@ -6,6 +6,7 @@
 
 #include "ContactBatch.hpp"
 #include "ContactModels.hpp"
+#include "VectorClones.hpp"
 
 #include <algorithm>
 #include <array>
@@ -193,14 +194,6 @@ inline __attribute__((always_inline)) void evaluate(ContactBatch& b, int n, doub
 }
 
 } // namespace
-
-// one clone per vector width, picked at load time by the CPU (GCC's function
-// multiversioning); the results are the same bits on each
-#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__)
-#define SDF_DEM_VECTOR_CLONES __attribute__((target_clones("avx512f", "avx2", "default")))
-#else
-#define SDF_DEM_VECTOR_CLONES
-#endif
 
 SDF_DEM_VECTOR_CLONES
 static void evaluateLinear(ContactBatch& b, int n, double dt)

@@ -3,6 +3,7 @@
 // checkpoint state and the stability checks.
 
 #include "Simulation.hpp"
+#include "Drift.hpp"
 #include "ThreadTeam.hpp"
 
 #include <algorithm>
@@ -18,76 +19,6 @@
 
 namespace sdf::dem
 {
-
-namespace
-{
-
-//- The first half of a velocity Verlet step for particles [begin, end): half kick with
-//  their forces F^n, drift, Lees-Edwards wrap (box: with the offset at the new time); their
-//  peculiar displacements in this step and since the list build (uBuild) raise maxStep2
-//  and maxDisp2.
-void driftRange
-(
-    Particles& p, int begin, int end, double dt, const PeriodicBox& boxNow,
-    const ParticleArray& uBuildXs, const ParticleArray& uBuildYs, const ParticleArray& uBuildZs,
-    double& maxDisp2, double& maxStep2
-)
-{
-    // locals and restrict pointers: the particle stores cannot alias the constants or the
-    // maxima, so they stay in registers
-    const PeriodicBox box = boxNow;
-    const double h = 0.5*dt, shearRate = box.shearRate, yMid = 0.5*box.ly;
-    double disp2Max = maxDisp2, step2Max = maxStep2;
-    double* __restrict x = p.x.data();
-    double* __restrict y = p.y.data();
-    double* __restrict z = p.z.data();
-    double* __restrict vx = p.vx.data();
-    double* __restrict vy = p.vy.data();
-    double* __restrict vz = p.vz.data();
-    double* __restrict wx = p.wx.data();
-    double* __restrict wy = p.wy.data();
-    double* __restrict wz = p.wz.data();
-    double* __restrict ux = p.ux.data();
-    double* __restrict uy = p.uy.data();
-    double* __restrict uz = p.uz.data();
-    const double* __restrict fx = p.fx.data();
-    const double* __restrict fy = p.fy.data();
-    const double* __restrict fz = p.fz.data();
-    const double* __restrict tx = p.tx.data();
-    const double* __restrict ty = p.ty.data();
-    const double* __restrict tz = p.tz.data();
-    const double* __restrict invMass = p.invMass.data();
-    const double* __restrict invInertia = p.invInertia.data();
-    const double* __restrict uBuildX = uBuildXs.data();
-    const double* __restrict uBuildY = uBuildYs.data();
-    const double* __restrict uBuildZ = uBuildZs.data();
-    for (int i = begin; i < end; ++i)
-    {
-        const double im = invMass[i], ii = invInertia[i];
-        const double fxm = h*fx[i]*im, fym = h*fy[i]*im, fzm = h*fz[i]*im;
-        const double txi = h*tx[i]*ii, tyi = h*ty[i]*ii, tzi = h*tz[i]*ii;
-        vx[i] += fxm; vy[i] += fym; vz[i] += fzm;
-        wx[i] += txi; wy[i] += tyi; wz[i] += tzi;
-
-        const double ddx = dt*vx[i], ddy = dt*vy[i], ddz = dt*vz[i];
-        const double peculiarDdx = ddx - dt*shearRate*(y[i] - yMid);
-        const double step2 = peculiarDdx*peculiarDdx + ddy*ddy + ddz*ddz;
-        if (step2 > step2Max) step2Max = step2;
-        // u: peculiar (x without the streaming), so u - u at the list build is the
-        // displacement the Verlet criterion needs (no separate array written)
-        ux[i] += peculiarDdx; uy[i] += ddy; uz[i] += ddz;
-        const double ex = ux[i] - uBuildX[i], ey = uy[i] - uBuildY[i], ez = uz[i] - uBuildZ[i];
-        const double d2 = ex*ex + ey*ey + ez*ez;
-        if (d2 > disp2Max) disp2Max = d2;
-        x[i] += ddx; y[i] += ddy; z[i] += ddz;
-
-        box.wrap(x[i], y[i], z[i], vx[i]);
-    }
-    maxDisp2 = disp2Max;
-    maxStep2 = step2Max;
-}
-
-} // namespace
 
 Simulation::Simulation
 (
@@ -416,6 +347,11 @@ void Simulation::step()
     const int* blockParticle = driftBegin_.data();
     const bool balance = nBlocks > 1;
     const double driftStart = balance ? wallSeconds() : 0;
+    if (driftStep2_.size() != std::size_t(n))
+    {
+        driftStep2_.assign(std::size_t(n), 0.0);
+        driftDisp2_.assign(std::size_t(n), 0.0);
+    }
     const std::array<double, 2> maxima = maxOverThreads<2>
     (
         nThreads_, 0.0,
@@ -427,7 +363,7 @@ void Simulation::step()
                 driftRange
                 (
                     p, blockParticle[b], blockParticle[b + 1], dt, box_,
-                    uBuildX_, uBuildY_, uBuildZ_, local[0], local[1]
+                    uBuildX_, uBuildY_, uBuildZ_, driftStep2_, driftDisp2_, local[0], local[1]
                 );
                 if (balance) driftBalance_.busy[b] += wallSeconds() - busyStart;
             }

@@ -347,6 +347,8 @@ private:
     ParticleArray fPrevX_, fPrevY_, fPrevZ_, tPrevX_, tPrevY_, tPrevZ_;
     // the synchronised velocities and spins formed from them, per particle, for the pass
     ParticleArray vSyncX_, vSyncY_, vSyncZ_, wSyncX_, wSyncY_, wSyncZ_;
+    // the drift's per-particle displacements (Drift.hpp), before their maxima
+    ParticleArray driftStep2_, driftDisp2_;
     // Particles::u at the last list build (u - uBuild: the peculiar displacement since,
     // for the rebuild criterion)
     ParticleArray uBuildX_, uBuildY_, uBuildZ_;

@@ -1,0 +1,17 @@
+#ifndef sdf_dem_VectorClones_hpp
+#define sdf_dem_VectorClones_hpp
+
+// SDF_DEM_VECTOR_CLONES before a function with a vectorisable loop: GCC compiles it once
+// per vector width (AVX-512, AVX2, the baseline SSE2) and picks the clone at load time
+// from the CPU (function multiversioning), so the build needs no -march. The files that
+// use it are compiled without floating-point contraction (CMakeLists.txt): a fused
+// multiply-add would round differently on the wider clones, and every clone must give
+// the bits of the baseline.
+
+#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__)
+#define SDF_DEM_VECTOR_CLONES __attribute__((target_clones("avx512f", "avx2", "default")))
+#else
+#define SDF_DEM_VECTOR_CLONES
+#endif
+
+#endif
