@@ -11,6 +11,8 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <stdexcept>
+#include <string>
 
 namespace sdf::dem
 {
@@ -213,7 +215,13 @@ void evaluateContactBatch(ContactModel model, ContactBatch& batch, int n, double
     {
         case ContactModel::linearSpringDashpot: evaluateLinear(batch, n, dt); return;
         case ContactModel::hertzMindlin: evaluateHertz(batch, n, dt); return;
+        default: break;
     }
+    throw std::logic_error
+    (
+        "evaluateContactBatch: contact model " + contactModelName(model)
+      + " has no batched loop (hasBatchedLoop)"
+    );
 }
 
 } // namespace sdf::dem

@@ -9,10 +9,12 @@
 // as evaluateContact, and IEEE-754 vector instructions round as the scalar ones do, so
 // the results are bitwise those of evaluateContact (the file is compiled without
 // floating-point contraction into fused multiply-adds, which would round otherwise).
-// Rolling resistance is not batched: with it on, the pass evaluates contact by contact.
+// Rolling resistance is not batched: with it on, the pass evaluates contact by contact,
+// as it does for a law without a batched loop (hasBatchedLoop).
 
 #include "ContactForce.hpp"
 #include "ContactLaw.hpp"
+#include "ContactModels.hpp"
 
 #include <vector>
 
@@ -53,6 +55,12 @@ private:
 //- Evaluates contacts [0, n) of the batch with the contact law `model` (the batch's
 //  inputs must be touching pairs, |r| > 0, without rolling resistance).
 void evaluateContactBatch(ContactModel model, ContactBatch& batch, int n, double dt);
+
+//- The laws with a batched loop (a case in evaluateContactBatch). A law without one runs
+//  contact by contact, unchanged otherwise.
+template<class Law> constexpr bool hasBatchedLoop = false;
+template<> constexpr bool hasBatchedLoop<LinearSpringDashpot> = true;
+template<> constexpr bool hasBatchedLoop<HertzMindlin> = true;
 
 } // namespace sdf::dem
 

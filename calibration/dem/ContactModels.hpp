@@ -7,12 +7,13 @@
 // all laws; the force pass is instantiated per law and withContactModel picks the law once
 // per pass, so the pair loop holds no branch on the model.
 //
-// A new law: a policy with the same static members (at() from the four constants
-// stiffnessConstants() picks, so that batched contacts carry them: ContactBatch.hpp), an enumerator in ContactModel (and its
-// name in contactModelFromName/contactModelName), its coefficients in PairCoefficients
-// (ContactLaw::makeCoefficients), its time step (ContactLaw::contactDuration,
-// maximumTimeStep), its settings check (validateContactSettings) and one case in
-// withContactModel.
+// A new law: a policy with the same static members (at() reads only the four constants
+// stiffnessConstants() picks: a ContactBatch carries them per contact), an enumerator in
+// ContactModel (and its name in contactModelFromName/contactModelName), its coefficients
+// in PairCoefficients (ContactLaw::makeCoefficients), its time step
+// (ContactLaw::contactDuration, maximumTimeStep), its settings check
+// (validateContactSettings), one case in withContactModel and one in
+// evaluateContactBatch (ContactBatch.cpp).
 
 #include "ContactLaw.hpp"
 

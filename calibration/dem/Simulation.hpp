@@ -9,7 +9,8 @@
 // one instantiation per contact law) in SimulationForces.cpp; the neighbour list, its
 // rebuilds, the spatial renumbering and the thread ranges in SimulationNeighbours.cpp;
 // temperatures, energies and stresses in SimulationMeasurements.cpp. The parts it is
-// built from: contact laws (ContactLaw, ContactModels, ContactForce), driving
+// built from: contact laws (ContactLaw, ContactModels, ContactForce; ContactBatch: the
+// law over a block's contacts at once), the drift (Drift), driving
 // (Driving: thermostat, Lees-Edwards; StochasticDriving), walls (Walls), renumbering (Renumbering), thread
 // balancing (BlockBalance), statistics (CellStatistics).
 //
@@ -60,8 +61,8 @@ struct SimulationSettings
     double barostatTime = 0;               // tau_p [s]; 0: automatic (Barostat.hpp)
     double maxOverlapFraction = 0.1;       // stop when delta/d_min exceeds this (<= 0: off)
     //- Evaluate the touching pairs as one batch (ContactBatch.hpp; not with rolling
-    //  resistance); false: contact by contact, the reference the batch is tested against.
-    //  The results are the same bits either way.
+    //  resistance, nor for a law without a batched loop); false: contact by contact, the
+    //  reference the batch is tested against. The results are the same bits either way.
     bool batchedContacts = true;
     double energyBlowUpFactor = 1e3;       // stop when E_kin > factor x reference
     bool checkTimeStep = true;             // refuse dt above the recommended maximum

@@ -396,8 +396,11 @@ double Simulation::evaluateTouchingPairs(int b, int nContacts)
     blockCross_[b].clear();
     // without rolling resistance the contact law runs over the block's contacts at once
     // (ContactBatch.hpp: the same bits as contact by contact)
-    return batchedContacts_ ? evaluateContactsInBatch<Law>(b, nContacts)
-                            : evaluateContactsOneByOne<Law>(b, nContacts);
+    if constexpr (hasBatchedLoop<Law>)
+    {
+        if (batchedContacts_) return evaluateContactsInBatch<Law>(b, nContacts);
+    }
+    return evaluateContactsOneByOne<Law>(b, nContacts);
 }
 
 SDF_DEM_ALWAYS_INLINE void Simulation::addContact
