@@ -1,8 +1,11 @@
 // The batched contact loop (ContactBatch.hpp). Every line below has its twin in
 // evaluateContact (ContactForce.hpp), in the same order of operations: a branch there is
-// a selection here, both sides computed (a lane's discarded side may divide by zero; no
-// trap is enabled). Kept bitwise equal by test_contactBatch (every branch, both laws)
-// and by the engine's reproducibility tests.
+// a selection here between values computed before it. A lane's discarded side may divide
+// zero by zero (a new contact's spring, a frictionless pair's Coulomb limit): the loop
+// runs with floating-point traps held off and the flags it raised dropped
+// (evaluateContactBatch), since OpenFOAM runs with traps on (FOAM_SIGFPE) and OpenMP's
+// worker threads keep them. Kept bitwise equal by dem.contact_batch (every branch, both
+// laws, with and without rolling resistance) and by the engine's reproducibility tests.
 
 #include "ContactBatch.hpp"
 #include "ContactModels.hpp"
@@ -10,6 +13,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cfenv>
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -29,8 +33,11 @@ void ContactBatch::reserveFor(int n)
           &wSyncIX, &wSyncIY, &wSyncIZ, &wSyncJX, &wSyncJY, &wSyncJZ,
           &constant0, &constant1, &constant2, &constant3, &friction, &touching,
           &ftX, &ftY, &ftZ, &nX, &nY, &nZ,
+          &rollingFriction, &rollingStiffness, &rollingDamping, &effectiveRadius,
+          &xrX, &xrY, &xrZ,
+          &torqueSumIX, &torqueSumIY, &torqueSumIZ, &torqueSumJX, &torqueSumJY, &torqueSumJZ,
           &forceX, &forceY, &forceZ, &nCrossFtX, &nCrossFtY, &nCrossFtZ,
-          &overlap, &overlapFraction, &normalVelocity})
+          &overlapFraction, &normalVelocity})
     {
         a->resize(std::size_t(n));
     }
@@ -48,14 +55,15 @@ inline void rotateOntoPlane(double& x, double& y, double& z, double nx, double n
     const double vn = x*nx + y*ny + z*nz;
     const double px = x - vn*nx, py = y - vn*ny, pz = z - vn*nz;
     const double p2 = px*px + py*py + pz*pz;
-    const double s = std::sqrt(mag2/p2);
     const bool alongN = p2 <= 0;
-    const double rx = alongN ? 0.0 : px*s, ry = alongN ? 0.0 : py*s, rz = alongN ? 0.0 : pz*s;
+    const double s = std::sqrt(mag2/p2);
+    const double psx = px*s, psy = py*s, psz = pz*s;
+    const double rx = alongN ? 0.0 : psx, ry = alongN ? 0.0 : psy, rz = alongN ? 0.0 : psz;
     const bool zero = mag2 == 0;
     x = zero ? x : rx; y = zero ? y : ry; z = zero ? z : rz;
 }
 
-template<class Law>
+template<class Law, bool Rolling>
 inline __attribute__((always_inline)) void evaluate(ContactBatch& b, int n, double dt)
 {
     const double* __restrict rxs = b.rx.data();
@@ -99,7 +107,19 @@ inline __attribute__((always_inline)) void evaluate(ContactBatch& b, int n, doub
     double* __restrict cx = b.nCrossFtX.data();
     double* __restrict cy = b.nCrossFtY.data();
     double* __restrict cz = b.nCrossFtZ.data();
-    double* __restrict overlaps = b.overlap.data();
+    const double* __restrict muRs = b.rollingFriction.data();
+    const double* __restrict krs = b.rollingStiffness.data();
+    const double* __restrict grs = b.rollingDamping.data();
+    const double* __restrict rss = b.effectiveRadius.data();
+    double* __restrict xrx = b.xrX.data();
+    double* __restrict xry = b.xrY.data();
+    double* __restrict xrz = b.xrZ.data();
+    double* __restrict tix = b.torqueSumIX.data();
+    double* __restrict tiy = b.torqueSumIY.data();
+    double* __restrict tiz = b.torqueSumIZ.data();
+    double* __restrict tjx = b.torqueSumJX.data();
+    double* __restrict tjy = b.torqueSumJY.data();
+    double* __restrict tjz = b.torqueSumJZ.data();
     double* __restrict overlapFractions = b.overlapFraction.data();
     double* __restrict normalVelocities = b.normalVelocity.data();
 
@@ -117,8 +137,10 @@ inline __attribute__((always_inline)) void evaluate(ContactBatch& b, int n, doub
 
         // a new contact starts from no tangential force and its own normal
         const bool old = touching[c] != 0;
-        double ft0 = old ? ftx[c] : 0.0, ft1 = old ? fty[c] : 0.0, ft2 = old ? ftz[c] : 0.0;
-        const double hn0 = old ? hnx[c] : n0, hn1 = old ? hny[c] : n1, hn2 = old ? hnz[c] : n2;
+        const double ftIn0 = ftx[c], ftIn1 = fty[c], ftIn2 = ftz[c];
+        const double hnIn0 = hnx[c], hnIn1 = hny[c], hnIn2 = hnz[c];
+        double ft0 = old ? ftIn0 : 0.0, ft1 = old ? ftIn1 : 0.0, ft2 = old ? ftIn2 : 0.0;
+        const double hn0 = old ? hnIn0 : n0, hn1 = old ? hnIn1 : n1, hn2 = old ? hnIn2 : n2;
 
         const ContactStiffness stiffness = Law::at(std::array<double, 4>{k0[c], k1[c], k2[c], k3[c]}, delta);
         const double fnElastic = stiffness.normalElasticForce;
@@ -132,8 +154,8 @@ inline __attribute__((always_inline)) void evaluate(ContactBatch& b, int n, doub
         double nh0 = hn0 + n0, nh1 = hn1 + n1, nh2 = hn2 + n2;
         {
             const double l = std::sqrt(nh0*nh0 + nh1*nh1 + nh2*nh2);
-            const double q0 = nh0/l, q1 = nh1/l, q2 = nh2/l;
             const bool longer = l > 1e-12;
+            const double q0 = nh0/l, q1 = nh1/l, q2 = nh2/l;
             nh0 = longer ? q0 : n0; nh1 = longer ? q1 : n1; nh2 = longer ? q2 : n2;
         }
         double u0 = ft0, u1 = ft1, u2 = ft2;
@@ -166,30 +188,85 @@ inline __attribute__((always_inline)) void evaluate(ContactBatch& b, int n, doub
         const double fn = Law::limitNormalForce(fnElastic - gn*vn);
 
         const double vt0 = vs0 - vn*n0, vt1 = vs1 - vn*n1, vt2 = vs2 - vn*n2;
-        double ftot0 = frictional ? ft0 - gt*vt0 : 0.0;
-        double ftot1 = frictional ? ft1 - gt*vt1 : 0.0;
-        double ftot2 = frictional ? ft2 - gt*vt2 : 0.0;
+        const double ftd0 = ft0 - gt*vt0, ftd1 = ft1 - gt*vt1, ftd2 = ft2 - gt*vt2;
+        double ftot0 = frictional ? ftd0 : 0.0;
+        double ftot1 = frictional ? ftd1 : 0.0;
+        double ftot2 = frictional ? ftd2 : 0.0;
         // the Coulomb limit on |F_n| (no friction: ftot and the limit are zero, no slip)
         const double limit = mu*std::abs(fn);
         const double mag2 = ftot0*ftot0 + ftot1*ftot1 + ftot2*ftot2;
         const bool sliding = mag2 > limit*limit;
         const double s = limit/std::sqrt(mag2);
-        ftot0 = sliding ? ftot0*s : ftot0;
-        ftot1 = sliding ? ftot1*s : ftot1;
-        ftot2 = sliding ? ftot2*s : ftot2;
-        ft0 = sliding ? ftot0 + gt*vt0 : ft0;
-        ft1 = sliding ? ftot1 + gt*vt1 : ft1;
-        ft2 = sliding ? ftot2 + gt*vt2 : ft2;
+        const double ftCapped0 = ftot0*s, ftCapped1 = ftot1*s, ftCapped2 = ftot2*s;
+        ftot0 = sliding ? ftCapped0 : ftot0;
+        ftot1 = sliding ? ftCapped1 : ftot1;
+        ftot2 = sliding ? ftCapped2 : ftot2;
+        const double ftSpring0 = ftot0 + gt*vt0, ftSpring1 = ftot1 + gt*vt1, ftSpring2 = ftot2 + gt*vt2;
+        ft0 = sliding ? ftSpring0 : ft0;
+        ft1 = sliding ? ftSpring1 : ft1;
+        ft2 = sliding ? ftSpring2 : ft2;
 
         fx[c] = fn*n0 + ftot0;
         fy[c] = fn*n1 + ftot1;
         fz[c] = fn*n2 + ftot2;
-        cx[c] = n1*ftot2 - n2*ftot1;
-        cy[c] = n2*ftot0 - n0*ftot2;
-        cz[c] = n0*ftot1 - n1*ftot0;
+        const double nxft0 = n1*ftot2 - n2*ftot1;
+        const double nxft1 = n2*ftot0 - n0*ftot2;
+        const double nxft2 = n0*ftot1 - n1*ftot0;
+        cx[c] = nxft0; cy[c] = nxft1; cz[c] = nxft2;
+
+        // 4. rolling resistance (evaluateContact's step 4)
+        if constexpr (Rolling)
+        {
+            const double rs = rss[c];
+            const double xrIn0 = xrx[c], xrIn1 = xry[c], xrIn2 = xrz[c];
+            const double x0 = old ? xrIn0 : 0.0, x1 = old ? xrIn1 : 0.0, x2 = old ? xrIn2 : 0.0;
+            double u0 = x0, u1 = x1, u2 = x2;
+            const double dwh0 = whix[c] - whjx[c], dwh1 = whiy[c] - whjy[c], dwh2 = whiz[c] - whjz[c];
+            const double vrh0 = dwh1*nh2 - dwh2*nh1;
+            const double vrh1 = dwh2*nh0 - dwh0*nh2;
+            const double vrh2 = dwh0*nh1 - dwh1*nh0;
+            rotateOntoPlane(u0, u1, u2, nh0, nh1, nh2);
+            u0 += rs*vrh0*dt;
+            u1 += rs*vrh1*dt;
+            u2 += rs*vrh2*dt;
+            rotateOntoPlane(u0, u1, u2, n0, n1, n2);
+            const double dws0 = wsix[c] - wsjx[c], dws1 = wsiy[c] - wsjy[c], dws2 = wsiz[c] - wsjz[c];
+            double vr0 = dws1*n2 - dws2*n1;
+            double vr1 = dws2*n0 - dws0*n2;
+            double vr2 = dws0*n1 - dws1*n0;
+            vr0 *= rs; vr1 *= rs; vr2 *= rs;
+            const double kr = krs[c], gr = grs[c];
+            double fr0 = -kr*u0 - gr*vr0, fr1 = -kr*u1 - gr*vr1, fr2 = -kr*u2 - gr*vr2;
+            const double rollingLimit = muRs[c]*std::abs(fn);
+            const double frMag2 = fr0*fr0 + fr1*fr1 + fr2*fr2;
+            const bool rollingSlides = frMag2 > rollingLimit*rollingLimit;
+            const double sr = rollingLimit/std::sqrt(frMag2);
+            // a pair without rolling resistance keeps no rolling displacement and no couple
+            const bool rolls = muRs[c] > 0;
+            const double frCapped0 = fr0*sr, frCapped1 = fr1*sr, frCapped2 = fr2*sr;
+            fr0 = rollingSlides ? frCapped0 : fr0;
+            fr1 = rollingSlides ? frCapped1 : fr1;
+            fr2 = rollingSlides ? frCapped2 : fr2;
+            const double xrSpring0 = -(fr0 + gr*vr0)/kr;
+            const double xrSpring1 = -(fr1 + gr*vr1)/kr;
+            const double xrSpring2 = -(fr2 + gr*vr2)/kr;
+            u0 = rollingSlides ? xrSpring0 : u0;
+            u1 = rollingSlides ? xrSpring1 : u1;
+            u2 = rollingSlides ? xrSpring2 : u2;
+            const double nxfr0 = n1*fr2 - n2*fr1;
+            const double nxfr1 = n2*fr0 - n0*fr2;
+            const double nxfr2 = n0*fr1 - n1*fr0;
+            // (evaluateContact's si, sj: R*/R of a particle, 0 for a wall; the batch has
+            // no walls)
+            const double si = rs/ri, sj = rs/rj;
+            xrx[c] = rolls ? u0 : x0; xry[c] = rolls ? u1 : x1; xrz[c] = rolls ? u2 : x2;
+            const double ti0 = nxft0 - si*nxfr0, ti1 = nxft1 - si*nxfr1, ti2 = nxft2 - si*nxfr2;
+            const double tj0 = nxft0 + sj*nxfr0, tj1 = nxft1 + sj*nxfr1, tj2 = nxft2 + sj*nxfr2;
+            tix[c] = rolls ? ti0 : nxft0; tiy[c] = rolls ? ti1 : nxft1; tiz[c] = rolls ? ti2 : nxft2;
+            tjx[c] = rolls ? tj0 : nxft0; tjy[c] = rolls ? tj1 : nxft1; tjz[c] = rolls ? tj2 : nxft2;
+        }
         ftx[c] = ft0; fty[c] = ft1; ftz[c] = ft2;
         hnx[c] = n0; hny[c] = n1; hnz[c] = n2;
-        overlaps[c] = delta;
         overlapFractions[c] = delta/(2*std::min(ri, rj));
         normalVelocities[c] = vn;
     }
@@ -200,22 +277,48 @@ inline __attribute__((always_inline)) void evaluate(ContactBatch& b, int n, doub
 SDF_DEM_VECTOR_CLONES
 static void evaluateLinear(ContactBatch& b, int n, double dt)
 {
-    evaluate<LinearSpringDashpot>(b, n, dt);
+    evaluate<LinearSpringDashpot, false>(b, n, dt);
+}
+
+SDF_DEM_VECTOR_CLONES
+static void evaluateLinearRolling(ContactBatch& b, int n, double dt)
+{
+    evaluate<LinearSpringDashpot, true>(b, n, dt);
 }
 
 SDF_DEM_VECTOR_CLONES
 static void evaluateHertz(ContactBatch& b, int n, double dt)
 {
-    evaluate<HertzMindlin>(b, n, dt);
+    evaluate<HertzMindlin, false>(b, n, dt);
 }
 
-void evaluateContactBatch(ContactModel model, ContactBatch& batch, int n, double dt)
+SDF_DEM_VECTOR_CLONES
+static void evaluateHertzRolling(ContactBatch& b, int n, double dt)
 {
+    evaluate<HertzMindlin, true>(b, n, dt);
+}
+
+void evaluateContactBatch(ContactModel model, bool rolling, ContactBatch& batch, int n, double dt)
+{
+    void (*loop)(ContactBatch&, int, double) = nullptr;
     switch (model)
     {
-        case ContactModel::linearSpringDashpot: evaluateLinear(batch, n, dt); return;
-        case ContactModel::hertzMindlin: evaluateHertz(batch, n, dt); return;
+        case ContactModel::linearSpringDashpot:
+            loop = rolling ? evaluateLinearRolling : evaluateLinear;
+            break;
+        case ContactModel::hertzMindlin:
+            loop = rolling ? evaluateHertzRolling : evaluateHertz;
+            break;
         default: break;
+    }
+    if (loop)
+    {
+        // the discarded lanes' 0/0: no trap, and the caller's flags as they were
+        std::fenv_t callers;
+        std::feholdexcept(&callers);
+        loop(batch, n, dt);
+        std::fesetenv(&callers);
+        return;
     }
     throw std::logic_error
     (

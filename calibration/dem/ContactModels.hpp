@@ -7,13 +7,14 @@
 // all laws; the force pass is instantiated per law and withContactModel picks the law once
 // per pass, so the pair loop holds no branch on the model.
 //
-// A new law: a policy with the same static members (at() reads only the four constants
-// stiffnessConstants() picks: a ContactBatch carries them per contact), an enumerator in
-// ContactModel (and its name in contactModelFromName/contactModelName), its coefficients
-// in PairCoefficients (ContactLaw::makeCoefficients), its time step
-// (ContactLaw::contactDuration, maximumTimeStep), its settings check
-// (validateContactSettings), one case in withContactModel and one in
-// evaluateContactBatch (ContactBatch.cpp).
+// A new law: a policy with the same static members, an enumerator in ContactModel (and
+// its name in contactModelFromName/contactModelName), its coefficients in PairCoefficients
+// (ContactLaw::makeCoefficients), its time step (ContactLaw::contactDuration,
+// maximumTimeStep), its settings check (validateContactSettings) and one case in
+// withContactModel. It then runs contact by contact; to run it in the force pass's
+// vectorised batch (optional), give it stiffnessConstants() and at(constants, delta) as
+// the two laws here, a case in evaluateContactBatch (ContactBatch.cpp) and set
+// hasBatchedLoop (ContactBatch.hpp).
 
 #include "ContactLaw.hpp"
 

@@ -64,12 +64,11 @@ void kickAndDrift
 
 void driftRange
 (
-    Particles& p, int begin, int end, double dt, const PeriodicBox& boxNow,
+    Particles& p, int begin, int end, double dt, const PeriodicBox& box,
     const ParticleArray& uBuildX, const ParticleArray& uBuildY, const ParticleArray& uBuildZ,
     ParticleArray& step2, ParticleArray& disp2, double& maxDisp2, double& maxStep2
 )
 {
-    const PeriodicBox box = boxNow;
     kickAndDrift
     (
         p, begin, end, dt, box.shearRate, 0.5*box.ly, uBuildX.data(), uBuildY.data(),

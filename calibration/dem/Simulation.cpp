@@ -34,7 +34,8 @@ Simulation::Simulation
     particles_(std::move(particles)),
     box_(box)
 {
-    batchedContacts_ = settings_.batchedContacts && !hasRollingResistance(settings_.contact);
+    batchedContacts_ = settings_.batchedContacts;
+    rollingResistance_ = hasRollingResistance(settings_.contact);
     const int n = int(particles_.size());
     const int nSpecies = int(species_.size());
     for (int i = 0; i < n; ++i)

@@ -60,9 +60,9 @@ struct SimulationSettings
     double targetPressure = 0;
     double barostatTime = 0;               // tau_p [s]; 0: automatic (Barostat.hpp)
     double maxOverlapFraction = 0.1;       // stop when delta/d_min exceeds this (<= 0: off)
-    //- Evaluate the touching pairs as one batch (ContactBatch.hpp; not with rolling
-    //  resistance, nor for a law without a batched loop); false: contact by contact, the
-    //  reference the batch is tested against. The results are the same bits either way.
+    //- Evaluate the touching pairs as one batch (ContactBatch.hpp; not for a law without a
+    //  batched loop); false: contact by contact, the reference the batch is tested
+    //  against. The results are the same bits either way.
     bool batchedContacts = true;
     double energyBlowUpFactor = 1e3;       // stop when E_kin > factor x reference
     bool checkTimeStep = true;             // refuse dt above the recommended maximum
@@ -227,16 +227,17 @@ private:
     //- One block's pairs that touch (over the near list, or all its listed pairs when
     //  rebuildNear); clears the pairs whose contact ended. Returns their number.
     int findTouchingPairs(int block, bool rebuildNear);
-    //- One block's touching pairs through the contact law, from the last to the first.
+    //- One block's touching pairs through the contact law, their forces added from the
+    //  last pair to the first.
     template<class Law>
     double evaluateTouchingPairs(int block, int nContacts);
-    //- The same with the block's ContactBatch (no rolling resistance).
+    //- The same with the block's ContactBatch.
     template<class Law>
     double evaluateContactsInBatch(int block, int nContacts);
-    //- The same contact by contact (rolling resistance; the batch's reference).
+    //- The same contact by contact (the batch's reference; a law without a batched loop).
     template<class Law>
     double evaluateContactsOneByOne(int block, int nContacts);
-    //- One block's touching pairs into its ContactBatch, evaluated there.
+    //- One block's touching pairs' kinematics, constants and history into its ContactBatch.
     template<class Law>
     void gatherContactBatch(int block, int nContacts);
     //- Adds one contact's force and torque sums to i and to j (or j's to the cross list).
@@ -335,7 +336,8 @@ private:
     std::vector<CacheLinePadded<std::vector<ContactSeparation>>> blockSeparations_;
     // per block: its touching pairs as a batch for the contact law (without rolling resistance)
     std::vector<CacheLinePadded<ContactBatch>> blockBatches_;
-    bool batchedContacts_ = true;   // false: contact by contact (rolling resistance, or set so)
+    bool batchedContacts_ = true;     // false: contact by contact (SimulationSettings)
+    bool rollingResistance_ = false;  // on for some pair: the batch carries its part
     // per block: its touching pairs whose second particle j lies in a higher block, in
     // decreasing pair order, with their force on i and j's torque sum (n x F_t, and the
     // rolling part; ContactResult::torqueSumJ) (added by j's owner after

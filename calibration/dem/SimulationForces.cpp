@@ -7,9 +7,9 @@
 // only. Every particle sums its incident pairs in DEcreasing pair order, starting from zero,
 // whatever the blocks and threads (bitwise reproducible, independent of the thread count
 // and of the block boundaries):
-//  - a block evaluates its contacts from the last to the first and adds each to i and,
-//    when j is its own, to j: its own pairs are the highest-numbered pairs of all its
-//    particles, so they come first;
+//  - a block adds its contacts' forces from the last pair to the first, each to i and,
+//    when j is its own, to j (the law itself may run in any order: ContactBatch): its own
+//    pairs are the highest-numbered pairs of all its particles, so they come first;
 //  - contacts whose j lies in a higher block ("cross" contacts, listed per block in the
 //    same decreasing order) come from lower-numbered pairs: after a barrier, the thread
 //    whose finish range holds j adds them, block b-1's first, down to block 0's, and only
@@ -36,8 +36,9 @@ void Simulation::computeForces(bool checkDisplacements, bool halfKick)
     if (!listValid_ || (checkDisplacements && neighbourListExpired())) rebuildNeighbourList();
     // F^n and the torques move to fPrev/tPrev (pointer swaps; the pass writes the new ones
     // in the other buffers): the dashpots use the synchronised velocities
-    // v^{n+1/2} + dt/2 F^n/m formed from them, pair by pair (no per-particle arrays written
-    // in the drift). Without the half kick (a refresh) they are the current velocities.
+    // v^{n+1/2} + dt/2 F^n/m formed from them once per particle at the pass's start
+    // (synchronisedVelocities; the drift writes no such array). Without the half kick (a
+    // refresh) they are the current velocities.
     {
         Particles& q = particles_;
         q.fx.swap(fPrevX_); q.fy.swap(fPrevY_); q.fz.swap(fPrevZ_);
@@ -368,6 +369,22 @@ void Simulation::gatherContactBatch(int b, int nContacts)
             mu[c] = coeffs.friction;
         }
     }
+    if (rollingResistance_)
+    {
+        const int* __restrict species = p.species.data();
+        const int* __restrict contacts = blockContacts_[b].data();
+        const ContactHistory* __restrict history = history_.data();
+        for (int c = 0; c < nContacts; ++c)
+        {
+            const PairCoefficients& coeffs = law_.pair(species[ci[c]], species[cj[c]]);
+            batch.rollingFriction[c] = coeffs.rollingFriction;
+            batch.rollingStiffness[c] = coeffs.rollingStiffness;
+            batch.rollingDamping[c] = coeffs.rollingDamping;
+            batch.effectiveRadius[c] = coeffs.effectiveRadius;
+            const ContactHistory& h = history[contacts[c]];
+            batch.xrX[c] = h.xr[0]; batch.xrY[c] = h.xr[1]; batch.xrZ[c] = h.xr[2];
+        }
+    }
     // the history
     {
         const int* __restrict contacts = blockContacts_[b].data();
@@ -387,15 +404,14 @@ void Simulation::gatherContactBatch(int b, int nContacts)
             nx[c] = h.n[0]; ny[c] = h.n[1]; nz[c] = h.n[2];
         }
     }
-    evaluateContactBatch(Law::model, batch, nContacts, dt_);
 }
 
 template<class Law>
 double Simulation::evaluateTouchingPairs(int b, int nContacts)
 {
     blockCross_[b].clear();
-    // without rolling resistance the contact law runs over the block's contacts at once
-    // (ContactBatch.hpp: the same bits as contact by contact)
+    // the contact law over the block's contacts at once (ContactBatch.hpp: the same bits
+    // as contact by contact)
     if constexpr (hasBatchedLoop<Law>)
     {
         if (batchedContacts_) return evaluateContactsInBatch<Law>(b, nContacts);
@@ -475,6 +491,7 @@ double Simulation::evaluateContactsInBatch(int b, int nContacts)
     // in short loops, each with few streams (their pointers stay in registers)
     gatherContactBatch<Law>(b, nContacts);
     ContactBatch& batch = blockBatches_[b];
+    evaluateContactBatch(Law::model, rollingResistance_, batch, nContacts, dt_);
     const int* __restrict contacts = blockContacts_[b].data();
     // the slots the stress sampling reads, and the history (a pair is listed once)
     {
@@ -506,10 +523,18 @@ double Simulation::evaluateContactsInBatch(int b, int nContacts)
             const int k = contacts[c];
             active[k] = 1;
             ContactHistory& h = history[k];
-            if (touching[c] == 0) h.xr[0] = h.xr[1] = h.xr[2] = 0;
+            if (touching[c] == 0) h.xr[0] = h.xr[1] = h.xr[2] = 0;   // (rolling: below)
             h.ft[0] = ftx[c]; h.ft[1] = fty[c]; h.ft[2] = ftz[c];
             h.n[0] = nx[c]; h.n[1] = ny[c]; h.n[2] = nz[c];
             h.touching = true;
+        }
+    }
+    if (rollingResistance_)
+    {
+        for (int c = 0; c < nContacts; ++c)
+        {
+            ContactHistory& h = history_[contacts[c]];
+            h.xr[0] = batch.xrX[c]; h.xr[1] = batch.xrY[c]; h.xr[2] = batch.xrZ[c];
         }
     }
     // what the batch does not take: contact by contact, over the batch's results
@@ -529,10 +554,15 @@ double Simulation::evaluateContactsInBatch(int b, int nContacts)
         batch.nCrossFtX[c] = res.nCrossFt[0];
         batch.nCrossFtY[c] = res.nCrossFt[1];
         batch.nCrossFtZ[c] = res.nCrossFt[2];
-        batch.overlap[c] = res.overlap;
         batch.overlapFraction[c] = res.overlap/(2*std::min(particles_.radius[i], particles_.radius[j]));
         batch.normalVelocity[c] = res.normalVelocity;
-        batch.touching[c] = res.newContact ? 0.0 : 1.0;
+        batch.touching[c] = res.newContact ? 0.0 : 1.0;   // from here: "not a new contact"
+        batch.torqueSumIX[c] = res.torqueSumI[0];
+        batch.torqueSumIY[c] = res.torqueSumI[1];
+        batch.torqueSumIZ[c] = res.torqueSumI[2];
+        batch.torqueSumJX[c] = res.torqueSumJ[0];
+        batch.torqueSumJY[c] = res.torqueSumJ[1];
+        batch.torqueSumJZ[c] = res.torqueSumJ[2];
         pfx_[k] = res.force[0]; pfy_[k] = res.force[1]; pfz_[k] = res.force[2];
         pcx_[k] = res.nCrossFt[0]; pcy_[k] = res.nCrossFt[1]; pcz_[k] = res.nCrossFt[2];
     }
@@ -546,11 +576,25 @@ double Simulation::evaluateContactsInBatch(int b, int nContacts)
         const double* __restrict cx = batch.nCrossFtX.data();
         const double* __restrict cy = batch.nCrossFtY.data();
         const double* __restrict cz = batch.nCrossFtZ.data();
-        for (int c = nContacts - 1; c >= 0; --c)
+        if (rollingResistance_)
         {
-            const double force[3] = {fx[c], fy[c], fz[c]};
-            const double torqueSum[3] = {cx[c], cy[c], cz[c]};
-            addContact(b, ci[c], cj[c], force, torqueSum, torqueSum);
+            // with the rolling couple: i's and j's torque sums differ
+            for (int c = nContacts - 1; c >= 0; --c)
+            {
+                const double force[3] = {fx[c], fy[c], fz[c]};
+                const double torqueSumI[3] = {batch.torqueSumIX[c], batch.torqueSumIY[c], batch.torqueSumIZ[c]};
+                const double torqueSumJ[3] = {batch.torqueSumJX[c], batch.torqueSumJY[c], batch.torqueSumJZ[c]};
+                addContact(b, ci[c], cj[c], force, torqueSumI, torqueSumJ);
+            }
+        }
+        else
+        {
+            for (int c = nContacts - 1; c >= 0; --c)
+            {
+                const double force[3] = {fx[c], fy[c], fz[c]};
+                const double torqueSum[3] = {cx[c], cy[c], cz[c]};
+                addContact(b, ci[c], cj[c], force, torqueSum, torqueSum);
+            }
         }
     }
     double maxOverlap = 0;
