@@ -130,7 +130,9 @@ double Simulation::pairForcePass(bool rebuildNear, bool kickHere, bool finishSum
         {
             for (int b = thread; b < nBlocks; b += team)
             {
+                const double busyStart = balance ? wallSeconds() : 0;
                 synchronisedVelocities(blockParticle_[b], blockParticle_[b + 1]);
+                if (balance) forceBalance_.busy[b] += wallSeconds() - busyStart;
             }
             if (nBlocks > 1)
             {
