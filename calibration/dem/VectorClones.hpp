@@ -8,7 +8,11 @@
 // multiply-add would round differently on the wider clones, and every clone must give
 // the bits of the baseline.
 
-#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__)
+// -DSDF_DEM_NO_VECTOR_CLONES compiles one version for the build's own target (to measure
+// one vector width: e.g. with -mavx2, or none for the SSE2 baseline).
+
+#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__) \
+ && !defined(SDF_DEM_NO_VECTOR_CLONES)
 #define SDF_DEM_VECTOR_CLONES __attribute__((target_clones("avx512f", "avx2", "default")))
 #else
 #define SDF_DEM_VECTOR_CLONES
