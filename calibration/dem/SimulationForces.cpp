@@ -495,21 +495,7 @@ double Simulation::evaluateContactsInBatch(int b, int nContacts)
     ContactBatch& batch = blockBatches_[b];
     evaluateContactBatch(Law::model, rollingResistance_, batch, nContacts, dt_);
     const int* __restrict contacts = blockContacts_[b].data();
-    // the slots the stress sampling reads, and the history (a pair is listed once)
-    {
-        const double* __restrict fx = batch.forceX.data();
-        const double* __restrict fy = batch.forceY.data();
-        const double* __restrict fz = batch.forceZ.data();
-        const double* __restrict cx = batch.nCrossFtX.data();
-        const double* __restrict cy = batch.nCrossFtY.data();
-        const double* __restrict cz = batch.nCrossFtZ.data();
-        for (int c = 0; c < nContacts; ++c)
-        {
-            const int k = contacts[c];
-            pfx_[k] = fx[c]; pfy_[k] = fy[c]; pfz_[k] = fz[c];
-            pcx_[k] = cx[c]; pcy_[k] = cy[c]; pcz_[k] = cz[c];
-        }
-    }
+    // the history (a pair is listed once)
     {
         const double* __restrict touching = batch.touching.data();
         const double* __restrict ftx = batch.ftX.data();
@@ -565,8 +551,21 @@ double Simulation::evaluateContactsInBatch(int b, int nContacts)
         batch.torqueSumJX[c] = res.torqueSumJ[0];
         batch.torqueSumJY[c] = res.torqueSumJ[1];
         batch.torqueSumJZ[c] = res.torqueSumJ[2];
-        pfx_[k] = res.force[0]; pfy_[k] = res.force[1]; pfz_[k] = res.force[2];
-        pcx_[k] = res.nCrossFt[0]; pcy_[k] = res.nCrossFt[1]; pcz_[k] = res.nCrossFt[2];
+    }
+    // the slots the stress sampling reads
+    {
+        const double* __restrict fx = batch.forceX.data();
+        const double* __restrict fy = batch.forceY.data();
+        const double* __restrict fz = batch.forceZ.data();
+        const double* __restrict cx = batch.nCrossFtX.data();
+        const double* __restrict cy = batch.nCrossFtY.data();
+        const double* __restrict cz = batch.nCrossFtZ.data();
+        for (int c = 0; c < nContacts; ++c)
+        {
+            const int k = contacts[c];
+            pfx_[k] = fx[c]; pfy_[k] = fy[c]; pfz_[k] = fz[c];
+            pcx_[k] = cx[c]; pcy_[k] = cy[c]; pcz_[k] = cz[c];
+        }
     }
     // the particles' sums, in decreasing pair order
     {
@@ -575,28 +574,20 @@ double Simulation::evaluateContactsInBatch(int b, int nContacts)
         const double* __restrict fx = batch.forceX.data();
         const double* __restrict fy = batch.forceY.data();
         const double* __restrict fz = batch.forceZ.data();
-        const double* __restrict cx = batch.nCrossFtX.data();
-        const double* __restrict cy = batch.nCrossFtY.data();
-        const double* __restrict cz = batch.nCrossFtZ.data();
-        if (rollingResistance_)
+        // with the rolling couple i's and j's torque sums differ; without it both are n x F_t
+        const bool rolling = rollingResistance_;
+        const double* __restrict tix = rolling ? batch.torqueSumIX.data() : batch.nCrossFtX.data();
+        const double* __restrict tiy = rolling ? batch.torqueSumIY.data() : batch.nCrossFtY.data();
+        const double* __restrict tiz = rolling ? batch.torqueSumIZ.data() : batch.nCrossFtZ.data();
+        const double* __restrict tjx = rolling ? batch.torqueSumJX.data() : batch.nCrossFtX.data();
+        const double* __restrict tjy = rolling ? batch.torqueSumJY.data() : batch.nCrossFtY.data();
+        const double* __restrict tjz = rolling ? batch.torqueSumJZ.data() : batch.nCrossFtZ.data();
+        for (int c = nContacts - 1; c >= 0; --c)
         {
-            // with the rolling couple: i's and j's torque sums differ
-            for (int c = nContacts - 1; c >= 0; --c)
-            {
-                const double force[3] = {fx[c], fy[c], fz[c]};
-                const double torqueSumI[3] = {batch.torqueSumIX[c], batch.torqueSumIY[c], batch.torqueSumIZ[c]};
-                const double torqueSumJ[3] = {batch.torqueSumJX[c], batch.torqueSumJY[c], batch.torqueSumJZ[c]};
-                addContact(b, ci[c], cj[c], force, torqueSumI, torqueSumJ);
-            }
-        }
-        else
-        {
-            for (int c = nContacts - 1; c >= 0; --c)
-            {
-                const double force[3] = {fx[c], fy[c], fz[c]};
-                const double torqueSum[3] = {cx[c], cy[c], cz[c]};
-                addContact(b, ci[c], cj[c], force, torqueSum, torqueSum);
-            }
+            const double force[3] = {fx[c], fy[c], fz[c]};
+            const double torqueSumI[3] = {tix[c], tiy[c], tiz[c]};
+            const double torqueSumJ[3] = {tjx[c], tjy[c], tjz[c]};
+            addContact(b, ci[c], cj[c], force, torqueSumI, torqueSumJ);
         }
     }
     double maxOverlap = 0;

@@ -13,6 +13,7 @@
 #include <cfenv>
 #include <cmath>
 #include <cstring>
+#include <optional>
 #include <random>
 
 using namespace sdf::dem;
@@ -75,6 +76,32 @@ Case randomCase(Kind kind, std::mt19937_64& rng, double kn)
     }
     if (kind == Kind::zeroForce || kind == Kind::frictionless) h.ft[0] = h.ft[1] = h.ft[2] = 0;
     return c;
+}
+
+//- The random contacts' law: friction 0.5 with the fine/coarse pair frictionless, and
+//  rolling resistance mu_r (0: off) with that pair rolling freely, so that lanes with and
+//  without friction and the couple stand side by side.
+ContactSettings randomContactSettings(ContactModel model, double rollingFriction)
+{
+    ContactSettings settings;
+    settings.model = model;
+    if (model == ContactModel::linearSpringDashpot) settings.normalStiffness = 2e3;
+    settings.restitution = 0.7;
+    settings.friction = 0.5;
+    settings.rollingFriction = rollingFriction;
+    std::optional<double> pairRolling;
+    if (rollingFriction > 0)
+    {
+        pairRolling = 0.0;
+        if (model == ContactModel::hertzMindlin)
+        {
+            // Hertz has no pair k_t to default to
+            settings.rollingStiffness = 500;
+            settings.rollingDamping = 1e-3;
+        }
+    }
+    settings.pairs.push_back({"fine", "coarse", std::nullopt, 0.0, std::nullopt, pairRolling});
+    return settings;
 }
 
 template<class Law>
@@ -242,47 +269,22 @@ RunResult shearedRun(ContactModel model, bool batched, int threads, double rolli
 
 TEST(ContactBatch, LinearSameBitsAsContactByContact)
 {
-    ContactSettings settings;
-    settings.normalStiffness = 2e3;
-    settings.restitution = 0.7;
-    settings.friction = 0.5;
-    settings.pairs.push_back({"fine", "coarse", std::nullopt, 0.0, std::nullopt, std::nullopt});
-    compareOverRandomContacts<LinearSpringDashpot>(settings);
+    compareOverRandomContacts<LinearSpringDashpot>(randomContactSettings(ContactModel::linearSpringDashpot, 0));
 }
 
 TEST(ContactBatch, HertzSameBitsAsContactByContact)
 {
-    ContactSettings settings;
-    settings.model = ContactModel::hertzMindlin;
-    settings.restitution = 0.7;
-    settings.friction = 0.5;
-    settings.pairs.push_back({"fine", "coarse", std::nullopt, 0.0, std::nullopt, std::nullopt});
-    compareOverRandomContacts<HertzMindlin>(settings);
+    compareOverRandomContacts<HertzMindlin>(randomContactSettings(ContactModel::hertzMindlin, 0));
 }
 
 TEST(ContactBatch, LinearRollingSameBitsAsContactByContact)
 {
-    ContactSettings settings;
-    settings.normalStiffness = 2e3;
-    settings.restitution = 0.7;
-    settings.friction = 0.5;
-    settings.rollingFriction = 0.1;
-    // the frictionless pair also rolls freely: lanes with and without the couple side by side
-    settings.pairs.push_back({"fine", "coarse", std::nullopt, 0.0, std::nullopt, 0.0});
-    compareOverRandomContacts<LinearSpringDashpot>(settings);
+    compareOverRandomContacts<LinearSpringDashpot>(randomContactSettings(ContactModel::linearSpringDashpot, 0.1));
 }
 
 TEST(ContactBatch, HertzRollingSameBitsAsContactByContact)
 {
-    ContactSettings settings;
-    settings.model = ContactModel::hertzMindlin;
-    settings.restitution = 0.7;
-    settings.friction = 0.5;
-    settings.rollingFriction = 0.1;
-    settings.rollingStiffness = 500;
-    settings.rollingDamping = 1e-3;
-    settings.pairs.push_back({"fine", "coarse", std::nullopt, 0.0, std::nullopt, 0.0});
-    compareOverRandomContacts<HertzMindlin>(settings);
+    compareOverRandomContacts<HertzMindlin>(randomContactSettings(ContactModel::hertzMindlin, 0.1));
 }
 
 TEST(ContactBatch, ShearedRunsSameBitsAsContactByContact)
