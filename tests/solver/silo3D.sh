@@ -127,8 +127,9 @@ test_silo3D_fill_deposition()
     grep -q "(height [0-9.]* m); the inlet's radius 0.0400 m: under the inlet" "$dir/log.heapProfile" \
         || { echo "FAIL: the apex is not under the inlet"; return 1; }
     local results="$projectDir/benchmarks/angleOfRepose/results.txt" poured settled
-    poured=$(awk '/^# mean over .* pour end:/ { for (i = 1; i < NF; ++i) if ($i == "end:") print $(i + 1) }' "$results")
-    settled=$(awk '/^# mean over .* settled:/ { for (i = 1; i < NF; ++i) if ($i == "settled:") print $(i + 1) }' "$results")
+    read -r poured settled < <(awk '/^# mean over / { for (i = 1; i < NF; ++i) {
+            if ($i == "end:") p = $(i + 1); if ($i == "settled:") s = $(i + 1) } }
+        END { print p, s }' "$results")
     [ -n "$poured" ] && [ -n "$settled" ] \
         || { echo "FAIL: no DEM heap angles in $results"; return 1; }
     awk -v p="$poured" -v s="$settled" '/flank angle/ { for (i = 1; i <= NF; ++i) if ($i == "angle") a = $(i + 1) }
