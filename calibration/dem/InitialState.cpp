@@ -46,6 +46,10 @@ void validatePackingSettings(const std::vector<Species>& species, const PackingS
         total += c;
     }
     if (total < 2) throw std::invalid_argument("counts: at least two particles required");
+    if (!std::isfinite(s.heightRatio) || !(s.heightRatio > 0))
+    {
+        throw std::invalid_argument("heightRatio ly/lx must be finite and positive, got " + std::to_string(s.heightRatio));
+    }
 }
 
 std::vector<int> countsFromVolumeFractions
@@ -98,10 +102,12 @@ Packing makePacking(const std::vector<Species>& species, const PackingSettings& 
     {
         solidVolume += settings.counts[s]*species[s].volume();
     }
-    const double L = std::cbrt(solidVolume/phi);
+    const double L = std::cbrt(solidVolume/(phi*settings.heightRatio));
+    const double height = settings.heightRatio*L;
 
     Packing packing;
-    packing.box.lx = packing.box.ly = packing.box.lz = L;
+    packing.box.lx = packing.box.lz = L;
+    packing.box.ly = height;
 
     // random insertion at a dilute start fraction
     const double phiStart = std::min(0.5*phi, 0.1);
@@ -112,7 +118,7 @@ Packing makePacking(const std::vector<Species>& species, const PackingSettings& 
     {
         for (int k = 0; k < settings.counts[s]; ++k)
         {
-            const double x = L*random.uniform(), y = L*random.uniform(), z = L*random.uniform();
+            const double x = L*random.uniform(), y = height*random.uniform(), z = L*random.uniform();
             p.add(x, y, z, species[s].radius(), species[s].mass(), int(s));
         }
     }

@@ -26,6 +26,8 @@ struct PackingSettings
     std::uint64_t seed = 1;
     double overlapTolerance = 2e-3;    // final max overlap / smaller diameter
     long maxSteps = 400000;            // relaxation step budget
+    double heightRatio = 1;            // ly/lx of the box (lz = lx): 1 a cube; a wall-bounded
+                                       // cell cut from a packing wants it tall
     bool verbose = false;
 };
 
@@ -49,7 +51,7 @@ std::vector<int> countsFromVolumeFractions
     int nTotal
 );
 
-//- Cubic periodic box at the requested phi with particles at rest, overlaps relaxed.
+//- Periodic box (a cube, or ly = heightRatio lx) at the requested phi with particles at rest, overlaps relaxed.
 Packing makePacking(const std::vector<Species>& species, const PackingSettings& settings);
 
 //- How the initial fluctuating energy is shared between particles of different mass.

@@ -165,6 +165,13 @@ public:
     double maximumOverlapFraction() const { return lastMaxOverlapFraction_; }
 
     StressSplit stressSplit() const;
+    //- The contacts' part of the stress per slab of y, J = sum f r^T (f the force on i,
+    //  r = x_i - x_j; not yet divided by a volume): slab l is [y0 + l h, y0 + (l+1) h), and
+    //  each contact's f r^T is shared among the slabs its branch vector crosses in
+    //  proportion to the length in each (the slab form of Irving & Kirkwood's stress:
+    //  the slabs' stresses then balance the body forces exactly, so a lithostatic
+    //  gradient is measured, not assumed); the part outside the slabs is dropped.
+    std::vector<Eigen::Matrix3d> contactStressBySlab(double y0, double h, int slabs) const;
     //- Total stress J computed in one pass over all particles and contacts (reference for
     //  the split).
     Eigen::Matrix3d totalStress() const;

@@ -3,6 +3,7 @@
 
 #include "Simulation.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <complex>
 
@@ -241,6 +242,38 @@ Eigen::Matrix3d Simulation::totalStress() const
         [&](std::size_t k, int, int, const Eigen::Vector3d& r)
         {
             J += Eigen::Vector3d(pfx_[k], pfy_[k], pfz_[k])*r.transpose();
+        }
+    );
+    return J;
+}
+
+std::vector<Eigen::Matrix3d> Simulation::contactStressBySlab(double y0, double h, int slabs) const
+{
+    std::vector<Eigen::Matrix3d> J(std::size_t(std::max(slabs, 0)), Eigen::Matrix3d::Zero());
+    if (slabs <= 0 || !(h > 0)) return J;
+    const Particles& p = particles_;
+    forEachContact
+    (
+        [&](std::size_t k, int i, int, const Eigen::Vector3d& r)
+        {
+            const Eigen::Matrix3d fr = Eigen::Vector3d(pfx_[k], pfy_[k], pfz_[k])*r.transpose();
+            // the branch vector runs from y_i - r_y to y_i, in slab units from y0
+            const double top = (p.y[i] - y0)/h;
+            const double bottom = top - r.y()/h;
+            const double lo = std::min(top, bottom), hi = std::max(top, bottom);
+            if (hi - lo < 1e-12)
+            {
+                const int l = int(std::floor(lo));
+                if (l >= 0 && l < slabs) J[std::size_t(l)] += fr;
+                return;
+            }
+            const int first = std::max(0, int(std::floor(lo)));
+            const int last = std::min(slabs - 1, int(std::floor(hi)));
+            for (int l = first; l <= last; ++l)
+            {
+                const double inside = std::min(hi, double(l + 1)) - std::max(lo, double(l));
+                if (inside > 0) J[std::size_t(l)] += inside/(hi - lo)*fr;
+            }
         }
     );
     return J;
