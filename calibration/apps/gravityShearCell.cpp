@@ -21,6 +21,8 @@
 //                         development on (default 2: the flow has formed)
 //   diffusionStrain       the lag of the diffusivity's displacements, in strains U/gap
 //                         (default 2: past the ballistic start, a fraction of a layer)
+//   lammpsData            if set: the cell as cut (walls included, all at rest) written as a
+//                         LAMMPS data file, for a peer (benchmarks/gravityShearVsLammps)
 //   output                prefix of the output files (default gravityShearCell)
 // The walls set the flow: mode, temperature, shearRate, thermostatTime, targetPressure,
 // barostatTime and maxEquilibrationTime are refused. The flowing layer must be at least 10
@@ -73,7 +75,7 @@ std::set<std::string> validKeys()
     keys.insert
     ({
         "gravity", "normalStress", "wallSpeed", "heightRatio", "wallThickness", "servoTime",
-        "profileRelaxationTime", "layers", "driftStartStrain", "diffusionStrain", "output"
+        "profileRelaxationTime", "layers", "driftStartStrain", "diffusionStrain", "lammpsData", "output"
     });
     return keys;
 }
@@ -372,6 +374,8 @@ int main(int argc, char** argv)
         (
             std::move(packing.particles), packing.box, wallThickness, 0.5*packing.box.ly + 4*dCoarse
         );
+        const std::string lammpsData = configText(config, "lammpsData", "");
+        if (!lammpsData.empty()) writeLammpsData(lammpsData, cut.particles, cut.box, settings.species);
         SimulationSettings simSettings = settings.simulation;
         simSettings.renumberEvery = 1000;
         Simulation sim(settings.species, simSettings, cut.particles, cut.box);
@@ -425,7 +429,8 @@ int main(int argc, char** argv)
         std::cout << "Sheared cell under gravity: " << sim.particles().size() << " grains, box "
                   << cut.box.lx << " x " << cut.box.lz << " m, the walls " << cell.gap()
                   << " m apart (" << cell.gap()/dCoarse << " coarse diameters), dt " << dt
-                  << " s, servo time " << cell.servoTime() << " s; sigma_N " << cellSettings.normalStress
+                  << " s, servo time " << cell.servoTime() << " s; the walls' planes y_b "
+                  << cell.bottomPlane() << " m, y_t " << cell.topPlane() << " m; sigma_N " << cellSettings.normalStress
                   << " Pa (p* " << cellSettings.normalStress/(rhoS*cellSettings.gravity*dMean)
                   << " at the top), U " << cellSettings.wallSpeed << " m/s (U/gap "
                   << nominalShearRate << " 1/s); " << equilibrationSteps
@@ -447,6 +452,10 @@ int main(int argc, char** argv)
             );
         }
 
+        // the top wall's load over the sampling: the servo's check
+        bool sampling = false;
+        double topStressSum = 0;
+        long topStressSteps = 0;
         std::ofstream series(output + "-series.dat");
         series << "# t[s] gap[m] topWallStress[Pa] bottomWallStress[Pa] yCoarse[m] yFine[m]"
                   " (yCoarse-yFine)/dCoarse\n" << std::setprecision(8);
@@ -460,6 +469,11 @@ int main(int argc, char** argv)
             series << s.time() << ' ' << cell.gap() << ' ' << cell.meanTopWallStress() << ' '
                    << cell.meanBottomWallStress() << ' ' << y[0] << ' ' << y[1] << ' '
                    << (y[0] - y[1])/dCoarse << '\n';
+            if (sampling)
+            {
+                topStressSum += cell.meanTopWallStress()*cell.wallStressSteps();
+                topStressSteps += cell.wallStressSteps();
+            }
             cell.resetWallStresses();
         };
         writeSeries(sim);
@@ -506,6 +520,8 @@ int main(int argc, char** argv)
         );
         std::vector<double> blockGap;
         long samplesTaken = 0;
+        if (cell.wallStressSteps() > 0) writeSeries(sim);   // the development's last stresses
+        sampling = true;
         for (int b = 0; b < blocks; ++b)
         {
             std::vector<std::array<double, nColumns>> sum(static_cast<std::size_t>(layers));
@@ -544,7 +560,9 @@ int main(int argc, char** argv)
             }
             blockGap.push_back(gapSum/samples);
         }
+        if (cell.wallStressSteps() > 0) writeSeries(sim);
         series.close();
+        const double topWallLoad = topStressSteps > 0 ? topStressSum/topStressSteps/cellSettings.normalStress : 0;
 
         const double gap = sdf::correlation::meanAndStandardError(blockGap).value;
         const double h = gap/layers;
@@ -618,6 +636,21 @@ int main(int argc, char** argv)
                     << sEarly.value/dFine << ' ' << sEarly.standardError/dFine << '\n'
                     << "profile " << sProfile.value << ' ' << sProfile.standardError << ' '
                     << sProfile.value/dFine << ' ' << sProfile.standardError/dFine << '\n';
+        segregation << "# per window (early): ";
+        for (double v : earlyS) segregation << ' ' << v;
+        segregation << "\n# per block (profile; a trend says the profile is not yet steady): ";
+        for (double v : profileS) segregation << ' ' << v;
+        segregation << '\n';
+        segregation << "# the top wall's mean load over the sampling: " << topWallLoad << " sigma_N\n";
+        if (std::abs(topWallLoad - 1) > 0.05)
+        {
+            const std::string warning =
+                "warning: the top wall carried " + std::to_string(topWallLoad) + " sigma_N over the"
+                " sampling, not 1 +- 0.05: the layer was not under its load (a longer"
+                " equilibrationTime), and these numbers are not the condition asked for";
+            segregation << "# " << warning << '\n';
+            std::cout << warning << '\n';
+        }
         const double n = std::max<long>(earlySamples, 1);
         segregation << "# the early drift's interior: w " << earlyMean.drift/n << " m/s, gammaDot "
                     << earlyMean.shearRate/n << " 1/s, c " << earlyMean.share/n << "\n"
@@ -632,7 +665,8 @@ int main(int argc, char** argv)
         }
         std::cout << "S (early drift) " << sEarly.value << " +- " << sEarly.standardError
                   << " m, S (profile's flux balance) " << sProfile.value << " +- " << sProfile.standardError
-                  << " m; C " << D.value/(rate.value*dMean*dMean) << "\n"
+                  << " m; C " << D.value/(rate.value*dMean*dMean) << "; the top wall's load "
+                  << topWallLoad << " sigma_N\n"
                   << "written " << output << "-series.dat, " << output << "-profiles.dat, "
                   << output << "-segregation.dat\n";
     }

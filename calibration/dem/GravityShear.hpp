@@ -17,11 +17,13 @@
 // gradient is a check of the cell, not an input).
 //
 // The servo (weak coupling, like Barostat.hpp's, but on the wall alone):
-//     V_y = (dMin/tau_w) min(F_y/(sigma_N A) - 1, 4)
+//     V_y = (dMin/tau_w) min(F_y/(sigma_N A) - 1, 100)
 // with F_y the grains' force on the top wall this step. A wall displacement delta
 // changes F_y/(sigma_N A) by about delta k/(sigma_N dMin^2) (the wall's own contacts, k
 // the contact stiffness), so the loop gain per step is dt k/(tau_w sigma_N dMin); the
-// automatic tau_w makes it 1/50 (automaticServoTime). A wall carrying less than half its
+// automatic tau_w makes it 1/50 (automaticServoTime). The wall's displacement is then
+// (dMin/tau_w)/(sigma_N A) times the impulse it takes, so a collision moves it little,
+// and the mean load is sigma_N exactly (the cap is never reached). A wall carrying less than half its
 // load (the start, or a bed that settled away from it) approaches at
 // 0.1 sqrt(sigma_N/rho_s) instead, a gentle landing that does not wait for the servo.
 //
@@ -118,6 +120,8 @@ public:
     double meanTopWallStress() const;
     double meanBottomWallStress() const;
     void resetWallStresses();
+    //- The steps the means since the last reset are over
+    long wallStressSteps() const { return forceSteps_; }
 
 private:
     GravityShearSettings settings_;
