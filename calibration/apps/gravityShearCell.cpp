@@ -266,19 +266,6 @@ void tallyDisplacements
     }
 }
 
-void refuse(const CellConfig& config, const std::string& key)
-{
-    if (config.count(key))
-    {
-        throw std::invalid_argument
-        (
-            "entry '" + key + "' is not used by the sheared cell under gravity: the walls"
-            " (wallSpeed, normalStress) set the flow, and equilibrationTime is the whole"
-            " development before the sampling"
-        );
-    }
-}
-
 double requiredNumber(const CellConfig& config, const std::string& key, const std::string& what)
 {
     if (!config.count(key)) throw std::invalid_argument("entry '" + key + "' missing: " + what);
@@ -297,12 +284,15 @@ int main(int argc, char** argv)
     try
     {
         const CellConfig config = readCellConfig(argv[1], argc, argv, 2, validKeys());
-        for (const char* key :
-             {"mode", "temperature", "shearRate", "thermostatTime", "targetPressure", "barostatTime",
-              "maxEquilibrationTime"})
-        {
-            refuse(config, key);
-        }
+        refuseKeys
+        (
+            config,
+            {"mode", "temperature", "shearRate", "thermostatTime", "targetPressure", "barostatTime",
+             "maxEquilibrationTime"},
+            "the sheared cell under gravity",
+            "the walls (wallSpeed, normalStress) set the flow, and equilibrationTime is the whole"
+            " development before the sampling"
+        );
         GravityShearSettings cellSettings;
         cellSettings.normalStress = requiredNumber(config, "normalStress", "the top wall's load sigma_N [Pa]");
         cellSettings.wallSpeed = requiredNumber(config, "wallSpeed", "the top wall's speed U [m/s]");
@@ -310,6 +300,8 @@ int main(int argc, char** argv)
         cellSettings.servoTime = configNumber(config, "servoTime", 0);
         cellSettings.profileRelaxationTime = configNumber(config, "profileRelaxationTime", 0);
 
+        // before the packing, which takes seconds
+        validateGravityShearSettings(cellSettings, 0);
         CellRunSettings settings = cellRunSettingsFrom(config);
         settings.simulation.mode = CellMode::nve;
         if (!config.count("label")) settings.label = "gravityShear";
@@ -324,18 +316,7 @@ int main(int argc, char** argv)
             );
         }
         const int coarse = int(settings.species.size()) - 1;
-        for (std::size_t s = 0; s + 1 < settings.species.size(); ++s)
-        {
-            if (settings.species[s].diameter > settings.species.back().diameter)
-            {
-                throw std::invalid_argument
-                (
-                    "entry 'species': the last species is taken for the coarse one and must be"
-                    " the largest ('" + settings.species[s].name + "' is larger than '"
-                  + settings.species.back().name + "')"
-                );
-            }
-        }
+        requireCoarseLast(settings, true);
         const double dCoarse = settings.species.back().diameter;
         double dMin = dCoarse;
         for (const Species& s : settings.species) dMin = std::min(dMin, s.diameter);
@@ -612,12 +593,21 @@ int main(int argc, char** argv)
                 inum += rate*dMean/std::sqrt(std::max(at(sigmaYYColumn, l), 1e-300)/rhoS);
             }
             const int n = interior.last - interior.first + 1;
-            profileS.push_back(drive > 0 ? flux/drive : 0);
+            if (drive > 0) profileS.push_back(flux/drive);
             pStar.push_back(p/n/(rhoS*cellSettings.gravity*dMean));
             inertial.push_back(inum/n);
             shearRate.push_back(gd/n);
             share.push_back(c/n);
             diffusivity.push_back(d/n);
+        }
+        if (earlyS.empty() || profileS.empty())
+        {
+            throw std::runtime_error
+            (
+                "the interior was not sheared during the " + std::string(earlyS.empty() ? "development" : "sampling")
+              + " (the top wall had not landed on the grains, or not started sliding): a longer"
+                " equilibrationTime; nothing written for the segregation"
+            );
         }
         using sdf::correlation::meanAndStandardError;
         const sdf::correlation::Estimate sEarly = meanAndStandardError(earlyS);

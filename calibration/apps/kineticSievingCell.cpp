@@ -163,19 +163,6 @@ SeriesPoint seriesPoint(const Simulation& sim, double k, int coarse)
     return s;
 }
 
-void refuse(const CellConfig& config, const std::string& key)
-{
-    if (config.count(key))
-    {
-        throw std::invalid_argument
-        (
-            "entry '" + key + "' is not used by the Kolmogorov cell: the forcing"
-            " (forcingAmplitude, forcingWaves) sets the flow and the temperature, and"
-            " equilibrationTime is the whole development before the sampling"
-        );
-    }
-}
-
 } // namespace
 
 int main(int argc, char** argv)
@@ -188,10 +175,13 @@ int main(int argc, char** argv)
     try
     {
         const CellConfig config = readCellConfig(argv[1], argc, argv, 2, validKeys());
-        for (const char* key : {"mode", "temperature", "shearRate", "thermostatTime", "maxEquilibrationTime"})
-        {
-            refuse(config, key);
-        }
+        refuseKeys
+        (
+            config, {"mode", "temperature", "shearRate", "thermostatTime", "maxEquilibrationTime"},
+            "the Kolmogorov cell",
+            "the forcing (forcingAmplitude, forcingWaves) sets the flow and the temperature, and"
+            " equilibrationTime is the whole development before the sampling"
+        );
         if (!config.count("forcingAmplitude"))
         {
             throw std::invalid_argument("entry 'forcingAmplitude' missing: the body force's amplitude a0 [m/s^2]");
@@ -204,18 +194,7 @@ int main(int argc, char** argv)
         {
             throw std::invalid_argument("entry 'species': the sieving cell needs two species (fine, coarse)");
         }
-        for (std::size_t s = 0; s + 1 < settings.species.size(); ++s)
-        {
-            if (!(settings.species[s].diameter < settings.species.back().diameter))
-            {
-                throw std::invalid_argument
-                (
-                    "entry 'species': the last species is taken for the coarse one and must be"
-                    " the largest ('" + settings.species[s].name + "' is not smaller than '"
-                  + settings.species.back().name + "')"
-                );
-            }
-        }
+        requireCoarseLast(settings, false);
         const double amplitude = configNumber(config, "forcingAmplitude", 0);
         if (!std::isfinite(amplitude) || !(amplitude > 0))
         {

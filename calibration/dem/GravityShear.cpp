@@ -69,6 +69,43 @@ WallBoundedCell cutWallBoundedCell
     return cell;
 }
 
+void validateGravityShearSettings(const GravityShearSettings& settings, double timeStep)
+{
+    if (!std::isfinite(settings.gravity) || !(settings.gravity > 0))
+    {
+        throw std::invalid_argument
+        (
+            "entry 'gravity' must be finite and positive [m/s^2] (it acts along -y, normal"
+            " to the walls), got " + std::to_string(settings.gravity)
+        );
+    }
+    if (!std::isfinite(settings.normalStress) || !(settings.normalStress > 0))
+    {
+        throw std::invalid_argument
+        (
+            "entry 'normalStress' must be a stress > 0 Pa (the top wall's load), got "
+          + std::to_string(settings.normalStress)
+        );
+    }
+    if (!std::isfinite(settings.wallSpeed) || settings.wallSpeed < 0)
+    {
+        throw std::invalid_argument("entry 'wallSpeed' must be finite and >= 0 [m/s], got " + std::to_string(settings.wallSpeed));
+    }
+    if (!std::isfinite(settings.servoTime) || settings.servoTime < 0)
+    {
+        throw std::invalid_argument("entry 'servoTime' must be >= 0 [s] (0: automatic), got " + std::to_string(settings.servoTime));
+    }
+    const double tauU = settings.profileRelaxationTime;
+    if (!std::isfinite(tauU) || tauU < 0 || (tauU > 0 && timeStep > 0 && tauU < 10*timeStep))
+    {
+        throw std::invalid_argument
+        (
+            "entry 'profileRelaxationTime' must be 0 (off) or at least 10 time steps ("
+          + std::to_string(10*timeStep) + " s), got " + std::to_string(tauU)
+        );
+    }
+}
+
 double GravityShear::automaticServoTime
 (
     double contactStiffness, double dMin, double normalStress, double timeStep
@@ -97,39 +134,7 @@ GravityShear::GravityShear
     servoTime_(settings.servoTime),
     timeStep_(timeStep)
 {
-    if (!std::isfinite(settings.gravity) || !(settings.gravity > 0))
-    {
-        throw std::invalid_argument
-        (
-            "entry 'gravity' must be finite and positive [m/s^2] (it acts along -y, normal"
-            " to the walls), got " + std::to_string(settings.gravity)
-        );
-    }
-    if (!std::isfinite(settings.normalStress) || !(settings.normalStress > 0))
-    {
-        throw std::invalid_argument
-        (
-            "entry 'normalStress' must be a stress > 0 Pa (the top wall's load), got "
-          + std::to_string(settings.normalStress)
-        );
-    }
-    if (!std::isfinite(settings.wallSpeed) || settings.wallSpeed < 0)
-    {
-        throw std::invalid_argument("entry 'wallSpeed' must be finite and >= 0 [m/s], got " + std::to_string(settings.wallSpeed));
-    }
-    if (!std::isfinite(settings.servoTime) || settings.servoTime < 0)
-    {
-        throw std::invalid_argument("entry 'servoTime' must be >= 0 [s] (0: automatic), got " + std::to_string(settings.servoTime));
-    }
-    const double tauU = settings.profileRelaxationTime;
-    if (!std::isfinite(tauU) || tauU < 0 || (tauU > 0 && tauU < 10*timeStep))
-    {
-        throw std::invalid_argument
-        (
-            "entry 'profileRelaxationTime' must be 0 (off) or at least 10 time steps ("
-          + std::to_string(10*timeStep) + " s), got " + std::to_string(tauU)
-        );
-    }
+    validateGravityShearSettings(settings, timeStep);
     if (!(timeStep > 0) || !(dMin > 0) || !(contactStiffness > 0) || !(solidsDensity > 0))
     {
         throw std::invalid_argument("gravityShear: time step, smallest diameter, contact stiffness and density must be positive");
@@ -178,6 +183,14 @@ void GravityShear::afterStep(Particles& p, int)
         wallVelocityY_ = -approachSpeed_;
     }
 
+    // the top wall slides once it carries its load, its speed ramped up over one
+    // strain gap/U (a wall set sliding at once hits the grains at rest beside it at U)
+    if (load > 0.5) landed_ = true;
+    if (landed_) slidingTime_ += timeStep_;
+    const double rampTime = settings_.wallSpeed > 0 ? gap()/settings_.wallSpeed : 0;
+    const double wallSpeed =
+        slidingTime_ >= rampTime ? settings_.wallSpeed : settings_.wallSpeed*slidingTime_/rampTime;
+
     const double dvGravity = settings_.gravity*timeStep_;
     const double tauU = settings_.profileRelaxationTime;
     const double a = tauU > 0 ? timeStep_/tauU : 0;
@@ -194,11 +207,11 @@ void GravityShear::afterStep(Particles& p, int)
                 if (a > 0)
                 {
                     const double s = std::clamp((p.y[i] - bottomPlane_)/gapNow, 0.0, 1.0);
-                    p.vx[i] += a*(settings_.wallSpeed*s - p.vx[i]);
+                    p.vx[i] += a*(wallSpeed*s - p.vx[i]);
                 }
                 break;
             case GrainRole::topWall:
-                p.vx[i] = settings_.wallSpeed;
+                p.vx[i] = wallSpeed;
                 p.vy[i] = wallVelocityY_;
                 p.vz[i] = 0;
                 break;
@@ -223,20 +236,26 @@ void GravityShear::afterStep(Particles& p, int)
 
 std::vector<double> GravityShear::exportState() const
 {
-    return {topPlane_, wallVelocityY_, topForceSum_, bottomForceSum_, double(forceSteps_)};
+    return
+    {
+        topPlane_, wallVelocityY_, topForceSum_, bottomForceSum_, double(forceSteps_),
+        landed_ ? 1.0 : 0.0, slidingTime_
+    };
 }
 
 void GravityShear::importState(const std::vector<double>& state)
 {
-    if (state.size() != 5)
+    if (state.size() != 7)
     {
-        throw std::invalid_argument("gravityShear: a driving state of 5 values expected, got " + std::to_string(state.size()));
+        throw std::invalid_argument("gravityShear: a driving state of 7 values expected, got " + std::to_string(state.size()));
     }
     topPlane_ = state[0];
     wallVelocityY_ = state[1];
     topForceSum_ = state[2];
     bottomForceSum_ = state[3];
     forceSteps_ = long(state[4]);
+    landed_ = state[5] != 0;
+    slidingTime_ = state[6];
 }
 
 double GravityShear::meanTopWallStress() const

@@ -7,7 +7,9 @@
 // from the same random packing as the flowing grains, so that the walls are as rough as
 // the bed. The bottom wall is at rest; the top wall slides along x at wallSpeed and
 // moves along y so that the force the grains exert on it holds normalStress (a servo,
-// below). Above the top wall the periodic box carries an empty gap, so no grain meets
+// below). The wall starts sliding once it has landed on the grains (carried half its
+// load), its speed ramped up over one strain gap/U: set sliding at once it would hit the
+// grains at rest beside it at U (with soft contacts, overlaps of a quarter diameter). Above the top wall the periodic box carries an empty gap, so no grain meets
 // the bottom wall's periodic image.
 //
 // Frozen grains carry invMass = invInertia = 0: the integrator's kicks leave their
@@ -53,6 +55,11 @@ struct GravityShearSettings
     double profileRelaxationTime = 0;     //- tau_u [s]; 0: no profile-holding force
 };
 
+//- Throws std::invalid_argument naming the entry: gravity finite and > 0, normalStress > 0,
+//  wallSpeed finite and >= 0, servoTime and profileRelaxationTime >= 0, the profile time
+//  at least 10 time steps (not checked while timeStep is 0: not yet known).
+void validateGravityShearSettings(const GravityShearSettings& settings, double timeStep);
+
 //- What a particle is in the wall-bounded cell.
 enum class GrainRole : unsigned char { flowing, bottomWall, topWall };
 
@@ -81,9 +88,8 @@ WallBoundedCell cutWallBoundedCell
 class GravityShear : public Driving
 {
 public:
-    //- Throws std::invalid_argument naming the entry: gravity finite and > 0, normalStress
-    //  > 0, wallSpeed finite and >= 0, servoTime and profileRelaxationTime >= 0, the
-    //  profile time above 10 dt.
+    //- Throws std::invalid_argument naming the entry (validateGravityShearSettings; time
+    //  step, dMin, stiffness and density > 0).
     GravityShear
     (
         const GravityShearSettings& settings,
@@ -135,6 +141,8 @@ private:
     double timeStep_;
     double approachSpeed_ = 0;    // the unloaded wall's speed toward the grains [m/s]
     double wallVelocityY_ = 0;
+    bool landed_ = false;         // the wall has carried half its load once
+    double slidingTime_ = 0;      // since it landed [s] (its speed ramps over one strain)
     double topForceSum_ = 0, bottomForceSum_ = 0;
     long forceSteps_ = 0;
 };

@@ -166,6 +166,41 @@ std::string configText(const CellConfig& c, const std::string& key, const std::s
     return it == c.end() ? fallback : it->second;
 }
 
+void refuseKeys
+(
+    const CellConfig& config,
+    const std::vector<std::string>& keys,
+    const std::string& cell,
+    const std::string& reason
+)
+{
+    for (const std::string& key : keys)
+    {
+        if (config.count(key))
+        {
+            throw std::invalid_argument("entry '" + key + "' is not used by " + cell + ": " + reason);
+        }
+    }
+}
+
+void requireCoarseLast(const CellRunSettings& settings, bool equalAllowed)
+{
+    const Species& coarse = settings.species.back();
+    for (std::size_t s = 0; s + 1 < settings.species.size(); ++s)
+    {
+        const double d = settings.species[s].diameter;
+        if (equalAllowed ? d > coarse.diameter : !(d < coarse.diameter))
+        {
+            throw std::invalid_argument
+            (
+                "entry 'species': the last species is taken for the coarse one and must be"
+                " the largest ('" + settings.species[s].name + "' is "
+              + (equalAllowed ? "larger than '" : "not smaller than '") + coarse.name + "')"
+            );
+        }
+    }
+}
+
 CellRunSettings cellRunSettingsFrom(const CellConfig& c)
 {
     CellRunSettings s;

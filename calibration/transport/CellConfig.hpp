@@ -12,6 +12,7 @@
 #include <map>
 #include <set>
 #include <string>
+#include <vector>
 
 namespace sdf::dem
 {
@@ -39,6 +40,20 @@ double configNumber(const CellConfig& config, const std::string& key, double fal
 
 //- The text under key, or fallback.
 std::string configText(const CellConfig& config, const std::string& key, const std::string& fallback);
+
+//- Throws std::invalid_argument for the first of keys present in config: "entry 'key' is
+//  not used by <cell>: <reason>" (a driver whose own settings decide what those keys would).
+void refuseKeys
+(
+    const CellConfig& config,
+    const std::vector<std::string>& keys,
+    const std::string& cell,
+    const std::string& reason
+);
+
+//- The drivers that take the last species for the coarse one: throws naming 'species'
+//  unless it is the largest (strictly, or at least as large when equalAllowed).
+void requireCoarseLast(const CellRunSettings& settings, bool equalAllowed);
 
 //- The cell described by config (species name:diameter:density ..., volumeFractions,
 //  mode (default thermostatted), model, pairs, progressEvery, label and every scalar
