@@ -25,10 +25,11 @@
 // the contact stiffness), so the loop gain per step is dt k/(tau_w sigma_N dMin); the
 // automatic tau_w makes it 1/50 (automaticServoTime). The wall's displacement is then
 // (dMin/tau_w)/(sigma_N A) times the impulse it takes, so a collision moves it little,
-// and the mean load is sigma_N exactly (the cap is never reached). A wall carrying less than half its
-// load (the start, or a bed that settled away from it) approaches at
-// 0.1 sqrt(sigma_N/rho_s) instead, a gentle landing that does not wait for the servo.
-//
+// and, the law being linear, a wall at rest on average carries sigma_N exactly (the cap
+// is never reached). While the load's running mean over 1000 steps is below half (the
+// start, or a bed compacting away from the wall) the wall approaches at
+// 0.1 sqrt(sigma_N/rho_s) instead: the servo alone follows a compacting bed at dMin/tau_w
+// at most (0.6 sigma_N carried on average over the first second of a cell).//
 // Optionally each flowing grain's x velocity is relaxed toward the linear profile
 // U (y - y_b)/(y_t - y_b) over profileRelaxationTime tau_u (a body force holding the
 // shear rate uniform, where gravity would otherwise concentrate the shear under the
@@ -141,6 +142,7 @@ private:
     double timeStep_;
     double approachSpeed_ = 0;    // the unloaded wall's speed toward the grains [m/s]
     double wallVelocityY_ = 0;
+    double meanLoad_ = 0;         // F_y/(sigma_N A), running mean over 1000 steps
     bool landed_ = false;         // the wall has carried half its load once
     double slidingTime_ = 0;      // since it landed [s] (its speed ramps over one strain)
     double topForceSum_ = 0, bottomForceSum_ = 0;
