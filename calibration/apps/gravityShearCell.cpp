@@ -14,7 +14,6 @@
 //   wallSpeed             the top wall's speed U along x [m/s] (required)
 //   heightRatio           the packing's height over its width (default 3)
 //   wallThickness         each wall's thickness in coarse diameters (default 1.5)
-//   servoTime             the wall servo's tau_w [s] (default 0: automatic)
 //   profileRelaxationTime tau_u of the force holding the linear profile [s] (default 0: off)
 //   layers                layers across the flowing layer for the profiles (default 10)
 //   driftStartStrain      the early drift is read from this strain U t/gap of the
@@ -74,7 +73,7 @@ std::set<std::string> validKeys()
     std::set<std::string> keys = cellConfigKeys();
     keys.insert
     ({
-        "gravity", "normalStress", "wallSpeed", "heightRatio", "wallThickness", "servoTime",
+        "gravity", "normalStress", "wallSpeed", "heightRatio", "wallThickness",
         "profileRelaxationTime", "layers", "driftStartStrain", "diffusionStrain", "lammpsData", "output"
     });
     return keys;
@@ -297,7 +296,6 @@ int main(int argc, char** argv)
         cellSettings.normalStress = requiredNumber(config, "normalStress", "the top wall's load sigma_N [Pa]");
         cellSettings.wallSpeed = requiredNumber(config, "wallSpeed", "the top wall's speed U [m/s]");
         cellSettings.gravity = configNumber(config, "gravity", 9.81);
-        cellSettings.servoTime = configNumber(config, "servoTime", 0);
         cellSettings.profileRelaxationTime = configNumber(config, "profileRelaxationTime", 0);
 
         // before the packing, which takes seconds
@@ -360,12 +358,9 @@ int main(int argc, char** argv)
         SimulationSettings simSettings = settings.simulation;
         simSettings.renumberEvery = 1000;
         Simulation sim(settings.species, simSettings, cut.particles, cut.box);
-        const double dMax = dCoarse;
         auto driving = std::make_unique<GravityShear>
         (
-            cellSettings, cut, dMin,
-            sim.contactLaw().normalStiffnessAtForce(cellSettings.normalStress*dMax*dMax),
-            settings.species.back().density, sim.timeStep()
+            cellSettings, cut, dMin, sim.timeStep()
         );
         GravityShear& cell = *driving;
         sim.setDriving(std::move(driving));
@@ -410,7 +405,7 @@ int main(int argc, char** argv)
         std::cout << "Sheared cell under gravity: " << sim.particles().size() << " grains, box "
                   << cut.box.lx << " x " << cut.box.lz << " m, the walls " << cell.gap()
                   << " m apart (" << cell.gap()/dCoarse << " coarse diameters), dt " << dt
-                  << " s, servo time " << cell.servoTime() << " s; the walls' planes y_b "
+                  << " s, top wall " << cell.wallMass() << " kg; the walls' planes y_b "
                   << cell.bottomPlane() << " m, y_t " << cell.topPlane() << " m; sigma_N " << cellSettings.normalStress
                   << " Pa (p* " << cellSettings.normalStress/(rhoS*cellSettings.gravity*dMean)
                   << " at the top), U " << cellSettings.wallSpeed << " m/s (U/gap "
@@ -433,7 +428,7 @@ int main(int argc, char** argv)
             );
         }
 
-        // the top wall's load over the sampling: the servo's check
+        // the top wall's load over the sampling: the check that the grains carried it
         bool sampling = false;
         double topStressSum = 0;
         long topStressSteps = 0;

@@ -91,10 +91,6 @@ void validateGravityShearSettings(const GravityShearSettings& settings, double t
     {
         throw std::invalid_argument("entry 'wallSpeed' must be finite and >= 0 [m/s], got " + std::to_string(settings.wallSpeed));
     }
-    if (!std::isfinite(settings.servoTime) || settings.servoTime < 0)
-    {
-        throw std::invalid_argument("entry 'servoTime' must be >= 0 [s] (0: automatic), got " + std::to_string(settings.servoTime));
-    }
     const double tauU = settings.profileRelaxationTime;
     if (!std::isfinite(tauU) || tauU < 0 || (tauU > 0 && timeStep > 0 && tauU < 10*timeStep))
     {
@@ -106,21 +102,11 @@ void validateGravityShearSettings(const GravityShearSettings& settings, double t
     }
 }
 
-double GravityShear::automaticServoTime
-(
-    double contactStiffness, double dMin, double normalStress, double timeStep
-)
-{
-    return 50*timeStep*contactStiffness/(normalStress*dMin);
-}
-
 GravityShear::GravityShear
 (
     const GravityShearSettings& settings,
     const WallBoundedCell& cell,
     double dMin,
-    double contactStiffness,
-    double solidsDensity,
     double timeStep
 )
 :
@@ -131,19 +117,17 @@ GravityShear::GravityShear
     topPlane_(cell.topPlane),
     boxHeight_(cell.box.ly),
     dMin_(dMin),
-    servoTime_(settings.servoTime),
     timeStep_(timeStep)
 {
     validateGravityShearSettings(settings, timeStep);
-    if (!(timeStep > 0) || !(dMin > 0) || !(contactStiffness > 0) || !(solidsDensity > 0))
+    if (!(timeStep > 0) || !(dMin > 0))
     {
-        throw std::invalid_argument("gravityShear: time step, smallest diameter, contact stiffness and density must be positive");
+        throw std::invalid_argument("gravityShear: time step and smallest diameter must be positive");
     }
-    if (!(servoTime_ > 0))
+    for (std::size_t i = 0; i < cell.particles.size(); ++i)
     {
-        servoTime_ = automaticServoTime(contactStiffness, dMin, settings.normalStress, timeStep);
+        if (roleById_[std::size_t(cell.particles.id[i])] == GrainRole::topWall) wallMass_ += cell.particles.mass[i];
     }
-    approachSpeed_ = std::max(dMin/servoTime_, 0.1*std::sqrt(settings.normalStress/solidsDensity));
 }
 
 double GravityShear::velocityScale() const
@@ -168,27 +152,12 @@ void GravityShear::afterStep(Particles& p, int)
     bottomForceSum_ += bottomForce;
     ++forceSteps_;
 
-    const double load = topForce/(settings_.normalStress*area_);
-    // the load's running mean over 1000 steps (tens of contact times): a wall that has
-    // lost the bed (the start, or a bed compacting away from it) reads low there, a
-    // rattling one less often; short, because the wall dives on while it lags
-    meanLoad_ += (load - meanLoad_)*1e-3;
-    if (meanLoad_ < 0.5)
-    {
-        // unloaded: approach at a tenth of the pressure's velocity scale sqrt(sigma_N/rho_s),
-        // faster than the servo's dMin/tau_w, which would follow a compacting bed slowly
-        // (a wall sent diving whenever a rattle took its instantaneous load below half
-        // carried 1.27 sigma_N on average in a collisional flow)
-        wallVelocityY_ = -approachSpeed_;
-    }
-    else
-    {
-        // linear in the load, so that a wall at rest on average carries sigma_N exactly;
-        // capped far above what collisions give (a hard impact at 1 m/s is a few times
-        // the load: a cap at 4 biased the mean load 17 % high)
-        wallVelocityY_ = dMin_/servoTime_*std::min(load - 1, 100.0);
-    }
-    if (load > 0.5) landed_ = true;
+    // the top wall is a body of the mass of its grains under the load sigma_N A, as a
+    // LAMMPS rigid body under fix addforce: its mean velocity vanishing, the grains' mean
+    // force on it is sigma_N A exactly (three first-order servos tried before biased the
+    // mean load by -40 to +27 % in shear, or followed a compacting bed too slowly)
+    wallVelocityY_ += timeStep_*(topForce - settings_.normalStress*area_)/wallMass_;
+    if (topForce > 0.5*settings_.normalStress*area_) landed_ = true;
     if (landed_) slidingTime_ += timeStep_;
 
     // the top wall slides once it has landed, its speed ramped up over one strain gap/U
@@ -245,15 +214,15 @@ std::vector<double> GravityShear::exportState() const
     return
     {
         topPlane_, wallVelocityY_, topForceSum_, bottomForceSum_, double(forceSteps_),
-        landed_ ? 1.0 : 0.0, slidingTime_, meanLoad_
+        landed_ ? 1.0 : 0.0, slidingTime_
     };
 }
 
 void GravityShear::importState(const std::vector<double>& state)
 {
-    if (state.size() != 8)
+    if (state.size() != 7)
     {
-        throw std::invalid_argument("gravityShear: a driving state of 8 values expected, got " + std::to_string(state.size()));
+        throw std::invalid_argument("gravityShear: a driving state of 7 values expected, got " + std::to_string(state.size()));
     }
     topPlane_ = state[0];
     wallVelocityY_ = state[1];
@@ -262,7 +231,6 @@ void GravityShear::importState(const std::vector<double>& state)
     forceSteps_ = long(state[4]);
     landed_ = state[5] != 0;
     slidingTime_ = state[6];
-    meanLoad_ = state[7];
 }
 
 double GravityShear::meanTopWallStress() const

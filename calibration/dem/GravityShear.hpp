@@ -6,7 +6,7 @@
 // and the vorticity (z); along y, gravity (-y) and two walls made of frozen grains cut
 // from the same random packing as the flowing grains, so that the walls are as rough as
 // the bed. The bottom wall is at rest; the top wall slides along x at wallSpeed and
-// moves along y so that the force the grains exert on it holds normalStress (a servo,
+// moves along y under the load normalStress (a body of its grains' mass,
 // below). The wall starts sliding once it has landed on the grains (carried half its
 // load), its speed ramped up over one strain gap/U: set sliding at once it would hit the
 // grains at rest beside it at U (with soft contacts, overlaps of a quarter diameter). Above the top wall the periodic box carries an empty gap, so no grain meets
@@ -18,18 +18,14 @@
 // force: the time average of the momentum balance is exact, so the lithostatic stress
 // gradient is a check of the cell, not an input).
 //
-// The servo (weak coupling, like Barostat.hpp's, but on the wall alone):
-//     V_y = (dMin/tau_w) min(F_y/(sigma_N A) - 1, 100)
-// with F_y the grains' force on the top wall this step. A wall displacement delta
-// changes F_y/(sigma_N A) by about delta k/(sigma_N dMin^2) (the wall's own contacts, k
-// the contact stiffness), so the loop gain per step is dt k/(tau_w sigma_N dMin); the
-// automatic tau_w makes it 1/50 (automaticServoTime). The wall's displacement is then
-// (dMin/tau_w)/(sigma_N A) times the impulse it takes, so a collision moves it little,
-// and, the law being linear, a wall at rest on average carries sigma_N exactly (the cap
-// is never reached). While the load's running mean over 1000 steps is below half (the
-// start, or a bed compacting away from the wall) the wall approaches at
-// 0.1 sqrt(sigma_N/rho_s) instead: the servo alone follows a compacting bed at dMin/tau_w
-// at most (0.6 sigma_N carried on average over the first second of a cell).//
+// The top wall is a rigid body of its grains' mass M under the load sigma_N A (as a LAMMPS
+// rigid body under fix addforce, the peer of benchmarks/gravityShearVsLammps):
+//     M dV_y/dt = F_y - sigma_N A,
+// F_y the grains' force on it this step. Its mean velocity vanishing, the grains' mean
+// force on it is sigma_N A exactly; it lands on the grains under the load and rides on
+// them, its bounces damped by their inelastic contacts. (First-order servos, V_y
+// proportional to the load's error, biased the mean load by -40 to +27 % in shear: capped,
+// gated by the load, or too slow to follow a compacting bed.)//
 // Optionally each flowing grain's x velocity is relaxed toward the linear profile
 // U (y - y_b)/(y_t - y_b) over profileRelaxationTime tau_u (a body force holding the
 // shear rate uniform, where gravity would otherwise concentrate the shear under the
@@ -52,12 +48,11 @@ struct GravityShearSettings
     double gravity = 9.81;                //- g [m/s^2], along -y, on the flowing grains
     double wallSpeed = 0;                 //- U: the top wall's velocity along x [m/s]
     double normalStress = 0;              //- sigma_N the top wall holds [Pa] (> 0)
-    double servoTime = 0;                 //- tau_w [s]; 0: automaticServoTime
     double profileRelaxationTime = 0;     //- tau_u [s]; 0: no profile-holding force
 };
 
 //- Throws std::invalid_argument naming the entry: gravity finite and > 0, normalStress > 0,
-//  wallSpeed finite and >= 0, servoTime and profileRelaxationTime >= 0, the profile time
+//  wallSpeed finite and >= 0, profileRelaxationTime >= 0, the profile time
 //  at least 10 time steps (not checked while timeStep is 0: not yet known).
 void validateGravityShearSettings(const GravityShearSettings& settings, double timeStep);
 
@@ -90,21 +85,13 @@ class GravityShear : public Driving
 {
 public:
     //- Throws std::invalid_argument naming the entry (validateGravityShearSettings; time
-    //  step, dMin, stiffness and density > 0).
+    //  step and dMin > 0).
     GravityShear
     (
         const GravityShearSettings& settings,
         const WallBoundedCell& cell,
         double dMin,
-        double contactStiffness,
-        double solidsDensity,
         double timeStep
-    );
-
-    //- tau_w giving the servo a loop gain of 1/50 per step (see above)
-    static double automaticServoTime
-    (
-        double contactStiffness, double dMin, double normalStress, double timeStep
     );
 
     std::string name() const override { return "gravityShear"; }
@@ -114,7 +101,8 @@ public:
     void importState(const std::vector<double>& state) override;
 
     const GravityShearSettings& settings() const { return settings_; }
-    double servoTime() const { return servoTime_; }
+    //- M, the top wall's mass [kg]
+    double wallMass() const { return wallMass_; }
     GrainRole role(const Particles& p, int i) const { return roleById_[std::size_t(p.id[i])]; }
     double bottomPlane() const { return bottomPlane_; }
     double topPlane() const { return topPlane_; }
@@ -138,11 +126,9 @@ private:
     double topPlane_;
     double boxHeight_;
     double dMin_;
-    double servoTime_;
     double timeStep_;
-    double approachSpeed_ = 0;    // the unloaded wall's speed toward the grains [m/s]
+    double wallMass_ = 0;         // M: the top wall's grains' mass [kg]
     double wallVelocityY_ = 0;
-    double meanLoad_ = 0;         // F_y/(sigma_N A), running mean over 1000 steps
     bool landed_ = false;         // the wall has carried half its load once
     double slidingTime_ = 0;      // since it landed [s] (its speed ramps over one strain)
     double topForceSum_ = 0, bottomForceSum_ = 0;

@@ -1,6 +1,6 @@
 // The sheared cell under gravity (GravityShear.hpp): the walls cut from the packing, the
 // lithostatic stress of a bed at rest measured by the slab stresses against the weight
-// of the grains above (the momentum balance the cell's pressures rest on), the servo
+// of the grains above (the momentum balance the cell's pressures rest on), the top wall
 // holding the load, the same bits on 1, 2 and 3 threads while it shears, and the
 // refusals. The segregation it measures: apps/gravityShearCell.cpp, docs/validation.md.
 #include "GravityShear.hpp"
@@ -52,11 +52,7 @@ Cell shearedUnderGravity
     s.renumberEvery = renumberEvery;
     Cell cell;
     cell.sim = std::make_unique<Simulation>(test::binary(), s, cut.particles, cut.box);
-    auto driving = std::make_unique<GravityShear>
-    (
-        settings, cut, 1e-3, cell.sim->contactLaw().normalStiffnessAtForce(settings.normalStress*4e-6),
-        rhoS, s.timeStep
-    );
+    auto driving = std::make_unique<GravityShear>(settings, cut, 1e-3, s.timeStep);
     cell.driving = driving.get();
     cell.sim->setDriving(std::move(driving));
     return cell;
@@ -135,7 +131,7 @@ TEST(GravityShear, LithostaticStressOfABedAtRest)
     };
     sim.run(20000, sample, 1000);
     const double top = drive.meanTopWallStress();
-    EXPECT_NEAR(top/settings.normalStress, 1, 0.02) << "the servo holds the load";
+    EXPECT_NEAR(top/settings.normalStress, 1, 0.02) << "the grains carry the top wall's load";
     for (int l = 0; l < slabs; ++l)
     {
         measured[std::size_t(l)] /= samples;
@@ -191,7 +187,7 @@ TEST(GravityShear, RefusesBadSettingsByName)
     const WallBoundedCell cut = smallCell(300);
     auto refusal = [&](GravityShearSettings s, double dt = 1e-6)
     {
-        return messageOf<std::invalid_argument>([&] { GravityShear(s, cut, 1e-3, 2e3, rhoS, dt); });
+        return messageOf<std::invalid_argument>([&] { GravityShear(s, cut, 1e-3, dt); });
     };
     GravityShearSettings good;
     good.normalStress = 100;
@@ -212,9 +208,6 @@ TEST(GravityShear, RefusesBadSettingsByName)
     s = good;
     s.profileRelaxationTime = 5e-6;
     EXPECT_TRUE(contains(refusal(s), "entry 'profileRelaxationTime' must be 0 (off) or at least 10 time steps"));
-    s = good;
-    s.servoTime = -1;
-    EXPECT_TRUE(contains(refusal(s), "entry 'servoTime'"));
 
     const std::vector<Species> species = test::binary();
     PackingSettings ps;
