@@ -6,10 +6,11 @@
 // and the vorticity (z); along y, gravity (-y) and two walls made of frozen grains cut
 // from the same random packing as the flowing grains, so that the walls are as rough as
 // the bed. The bottom wall is at rest; the top wall slides along x at wallSpeed and
-// moves along y under the load normalStress (a body of its grains' mass,
-// below). The wall starts sliding once it has landed on the grains (carried half its
-// load), its speed ramped up over one strain gap/U: set sliding at once it would hit the
-// grains at rest beside it at U (with soft contacts, overlaps of a quarter diameter). Above the top wall the periodic box carries an empty gap, so no grain meets
+// moves along y under the load normalStress (a rigid body of its grains' mass, below).
+// It starts sliding once it has landed on the grains (carried half its load), its speed
+// ramped up over one strain gap/U: set sliding at once it would hit the grains at rest
+// beside it at U (with soft contacts, overlaps of a quarter diameter). Above the top
+// wall the periodic box carries an empty gap, so no grain meets
 // the bottom wall's periodic image.
 //
 // Frozen grains carry invMass = invInertia = 0: the integrator's kicks leave their
