@@ -103,7 +103,7 @@ std::vector<std::array<double, nColumns>> layerProfile
     const double h = cell.gap()/layers, y0 = cell.bottomPlane();
     std::vector<int> layer(n, -1);
     std::vector<double> mass(nl), mx(nl), my(nl), mz(nl), volume(nl), coarseVolume(nl);
-    std::vector<double> coarseVy(nl), coarseV(nl), fineVy(nl), fineV(nl), volumeVy(nl);
+    std::vector<double> coarseVy(nl), fineVy(nl), fineV(nl), volumeVy(nl);
     for (std::size_t i = 0; i < n; ++i)
     {
         if (cell.role(p, int(i)) != GrainRole::flowing) continue;
@@ -115,7 +115,7 @@ std::vector<std::array<double, nColumns>> layerProfile
         mx[L] += p.mass[i]*p.vx[i]; my[L] += p.mass[i]*p.vy[i]; mz[L] += p.mass[i]*p.vz[i];
         volume[L] += v;
         volumeVy[L] += v*p.vy[i];
-        if (p.species[i] == coarse) { coarseVolume[L] += v; coarseVy[L] += v*p.vy[i]; coarseV[L] += v; }
+        if (p.species[i] == coarse) { coarseVolume[L] += v; coarseVy[L] += v*p.vy[i]; }
         else { fineVy[L] += v*p.vy[i]; fineV[L] += v; }
     }
     // kinetic stress about each layer's mean velocity (compressive positive, as the
@@ -142,7 +142,7 @@ std::vector<std::array<double, nColumns>> layerProfile
         // the shear stress a wall moving toward +x at the top exerts: positive
         o[sigmaXYColumn] = -(kxy[L] + 0.5*(J[L](0, 1) + J[L](1, 0)))/layerVolume;
         const double mean = volume[L] > 0 ? volumeVy[L]/volume[L] : 0;
-        o[coarseDriftColumn] = coarseV[L] > 0 ? coarseVy[L]/coarseV[L] - mean : 0;
+        o[coarseDriftColumn] = coarseVolume[L] > 0 ? coarseVy[L]/coarseVolume[L] - mean : 0;
         o[fineDriftColumn] = fineV[L] > 0 ? fineVy[L]/fineV[L] - mean : 0;
     }
     return out;

@@ -178,6 +178,16 @@ void GravityShear::afterStep(Particles& p, int)
         switch (roleById_[std::size_t(p.id[i])])
         {
             case GrainRole::flowing:
+                if (p.y[i] > lostAbove)
+                {
+                    throw std::runtime_error
+                    (
+                        "gravityShear: a flowing grain (id " + std::to_string(p.id[i]) + ") left the layer"
+                        " between the walls (y " + std::to_string(p.y[i]) + " m, top wall at "
+                      + std::to_string(topPlane_) + " m): through a wall (make wallThickness larger)"
+                        " or over the top wall (a normalStress too small for wallSpeed)"
+                    );
+                }
                 p.vy[i] -= dvGravity;
                 if (a > 0)
                 {
@@ -192,19 +202,6 @@ void GravityShear::afterStep(Particles& p, int)
                 break;
             case GrainRole::bottomWall:
                 break;
-        }
-    }
-    for (int i = 0; i < n; ++i)
-    {
-        if (p.y[i] > lostAbove && roleById_[std::size_t(p.id[i])] == GrainRole::flowing)
-        {
-            throw std::runtime_error
-            (
-                "gravityShear: a flowing grain (id " + std::to_string(p.id[i]) + ") left the layer"
-                " between the walls (y " + std::to_string(p.y[i]) + " m, top wall at "
-              + std::to_string(topPlane_) + " m): through a wall (make wallThickness larger)"
-                " or over the top wall (a normalStress too small for wallSpeed)"
-            );
         }
     }
 }
