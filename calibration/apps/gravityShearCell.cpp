@@ -18,6 +18,9 @@
 //   layers                layers across the flowing layer for the profiles (default 10)
 //   driftStartStrain      the early drift is read from this strain U t/gap of the
 //                         development on (default 2: the flow has formed)
+//   driftEndStrain        ... up to this strain (default: the development's end); the
+//                         development goes on after it, so that a long run samples a
+//                         developed profile after an early drift read in the first strains
 //   diffusionStrain       the lag of the diffusivity's displacements, in strains U/gap
 //                         (default 2: past the ballistic start, a fraction of a layer)
 //   lammpsData            if set: the cell as cut (walls included, all at rest) written as a
@@ -40,12 +43,15 @@
 //   <output>-segregation.dat  the percolation length S of w_coarse = S gammaDot (1 - c)
 //                          by two estimators over the interior layers (two coarse
 //                          diameters from either wall): the early drift of the mixed
-//                          start (5 windows of the development after driftStartStrain:
+//                          start (5 windows from driftStartStrain to driftEndStrain:
 //                          sum w / sum gammaDot (1 - c)), and the sampled profile's
-//                          flux balance c w = D dc/dy (per block: sum D dc/dy / sum
-//                          gammaDot c (1 - c)); with the interior's p*, I, gammaDot, c,
-//                          D and C = D/(gammaDot dMean^2). The second holds once the
-//                          profile is steady (the series shows when)
+//                          flux balance c w_seg = c w + D dc/dy (per block: sum (c w +
+//                          D dc/dy) / sum gammaDot c (1 - c), w the coarse drift
+//                          measured, D from the displacements); with the share of the
+//                          balance the diffusive term carries (1 at steady state, where
+//                          w = 0; near 0 in a mixed layer, where the balance is the
+//                          drift itself) and the interior's p*, I, gammaDot, c, D and
+//                          C = D/(gammaDot dMean^2)
 // The species are taken in the order given; the last one is "coarse" (the largest).
 #include "CellConfig.hpp"
 #include "GravityShear.hpp"
@@ -74,7 +80,8 @@ std::set<std::string> validKeys()
     keys.insert
     ({
         "gravity", "normalStress", "wallSpeed", "heightRatio", "wallThickness",
-        "profileRelaxationTime", "layers", "driftStartStrain", "diffusionStrain", "lammpsData", "output"
+        "profileRelaxationTime", "layers", "driftStartStrain", "driftEndStrain",
+        "diffusionStrain", "lammpsData", "output"
     });
     return keys;
 }
@@ -393,13 +400,16 @@ int main(int argc, char** argv)
         );
         const double lag = lagSamples*sampleEvery*dt;
         const long driftStartStep = std::lround(driftStartStrain/nominalShearRate/dt);
-        if (driftStartStep >= equilibrationSteps)
+        const long driftEndStep = config.count("driftEndStrain")
+            ? std::lround(configNumber(config, "driftEndStrain", 0)/nominalShearRate/dt) : equilibrationSteps;
+        if (driftStartStep >= driftEndStep || driftEndStep > equilibrationSteps)
         {
             throw std::invalid_argument
             (
-                "entry 'equilibrationTime': the development (" + std::to_string(equilibrationSteps*dt)
-              + " s) must outlast driftStartStrain (" + std::to_string(driftStartStep*dt)
-              + " s): the early drift is read between them"
+                "entries 'driftStartStrain', 'driftEndStrain', 'equilibrationTime': the early drift is"
+                " read from " + std::to_string(driftStartStep*dt) + " s to " + std::to_string(driftEndStep*dt)
+              + " s, which must be an interval within the development (" + std::to_string(equilibrationSteps*dt)
+              + " s)"
             );
         }
         std::cout << "Sheared cell under gravity: " << sim.particles().size() << " grains, box "
@@ -410,7 +420,8 @@ int main(int argc, char** argv)
                   << " Pa (p* " << cellSettings.normalStress/(rhoS*cellSettings.gravity*dMean)
                   << " at the top), U " << cellSettings.wallSpeed << " m/s (U/gap "
                   << nominalShearRate << " 1/s); " << equilibrationSteps
-                  << " steps of development (the early drift from step " << driftStartStep << "), "
+                  << " steps of development (the early drift from step " << driftStartStep << " to "
+                  << driftEndStep << "), "
                   << settings.blocks << " blocks of " << blockSteps << " steps, diffusion lag "
                   << lag << " s\n";
 
@@ -457,7 +468,7 @@ int main(int argc, char** argv)
 
         // the early drift: 5 windows of the rest of the development
         constexpr int driftWindows = 5;
-        const long driftSteps = equilibrationSteps - driftStartStep;
+        const long driftSteps = driftEndStep - driftStartStep;
         std::vector<double> earlyS;
         BulkState earlyMean;
         long earlySamples = 0;
@@ -481,6 +492,14 @@ int main(int argc, char** argv)
                 settings.label + " early drift " + std::to_string(w + 1) + "/" + std::to_string(driftWindows)
             );
             if (rateSum > 0) earlyS.push_back(driftSum/rateSum);
+        }
+        if (equilibrationSteps > driftEndStep)
+        {
+            sim.run
+            (
+                equilibrationSteps - driftEndStep, writeSeries, seriesEvery, settings.progressEvery,
+                settings.label + " development after the early drift"
+            );
         }
 
         const int blocks = settings.blocks;
@@ -569,33 +588,43 @@ int main(int argc, char** argv)
             profiles << '\n';
         }
 
-        // the flux balance per block over the interior: sum D dc/dy / sum gammaDot c (1 - c),
-        // derivatives by central differences; and the interior's conditions
-        std::vector<double> profileS, pStar, inertial, shearRate, share, diffusivity;
+        // the flux balance per block over the interior: the segregation flux c w_seg is the
+        // net coarse flux measured (c w) plus the diffusive back-flux D dc/dy it works
+        // against; S = sum (c w + D dc/dy) / sum gammaDot c (1 - c), derivatives by central
+        // differences. At steady state w = 0 and this is the steady profile's balance
+        // c w_seg = D dc/dy; before it, it holds at every instant the model holds, which is
+        // what makes it an estimator independent of the early drift once the diffusive term
+        // carries most of it (diffusiveShare). And the interior's conditions.
+        std::vector<double> balanceS, diffusiveShare, pStar, inertial, shearRate, share, diffusivity;
         for (int b = 0; b < blocks; ++b)
         {
             auto at = [&](int column, int l) { return blockMeans[std::size_t(column)][std::size_t(l)][std::size_t(b)]; };
-            double flux = 0, drive = 0, p = 0, gd = 0, c = 0, d = 0, inum = 0;
+            double diffusive = 0, net = 0, drive = 0, p = 0, gd = 0, c = 0, d = 0, inum = 0;
             for (int l = interior.first; l <= interior.last; ++l)
             {
                 const double dcdy = (at(coarseColumn, l + 1) - at(coarseColumn, l - 1))/(2*h);
                 const double rate = (at(velocityColumn, l + 1) - at(velocityColumn, l - 1))/(2*h);
                 const double D = blockD[2][std::size_t(l)][std::size_t(b)];
                 const double cl = at(coarseColumn, l);
-                flux += D*dcdy;
+                diffusive += D*dcdy;
+                net += cl*at(coarseDriftColumn, l);
                 drive += rate*cl*(1 - cl);
                 p += at(sigmaYYColumn, l); gd += rate; c += cl; d += D;
                 inum += rate*dMean/std::sqrt(std::max(at(sigmaYYColumn, l), 1e-300)/rhoS);
             }
             const int n = interior.last - interior.first + 1;
-            if (drive > 0) profileS.push_back(flux/drive);
+            if (drive > 0)
+            {
+                balanceS.push_back((net + diffusive)/drive);
+                diffusiveShare.push_back(diffusive/(net + diffusive));
+            }
             pStar.push_back(p/n/(rhoS*cellSettings.gravity*dMean));
             inertial.push_back(inum/n);
             shearRate.push_back(gd/n);
             share.push_back(c/n);
             diffusivity.push_back(d/n);
         }
-        if (earlyS.empty() || profileS.empty())
+        if (earlyS.empty() || balanceS.empty())
         {
             throw std::runtime_error
             (
@@ -606,7 +635,7 @@ int main(int argc, char** argv)
         }
         using sdf::correlation::meanAndStandardError;
         const sdf::correlation::Estimate sEarly = meanAndStandardError(earlyS);
-        const sdf::correlation::Estimate sProfile = meanAndStandardError(profileS);
+        const sdf::correlation::Estimate sBalance = meanAndStandardError(balanceS);
         const sdf::correlation::Estimate rate = meanAndStandardError(shearRate);
         const sdf::correlation::Estimate D = meanAndStandardError(diffusivity);
         std::ofstream segregation(output + "-segregation.dat");
@@ -614,17 +643,19 @@ int main(int argc, char** argv)
                     << "# w_coarse = S gammaDot (1 - c) over the interior layers " << interior.first
                     << "-" << interior.last << " of " << layers << " (two coarse diameters from the walls);"
                     << " errors: standard errors over " << driftWindows << " windows (early) and "
-                    << blocks << " blocks (profile)\n"
+                    << blocks << " blocks (balance)\n"
                     << "# estimator S[m] S_err[m] S/dFine S/dFine_err\n";
         const double dFine = settings.species.front().diameter;
         segregation << "early " << sEarly.value << ' ' << sEarly.standardError << ' '
                     << sEarly.value/dFine << ' ' << sEarly.standardError/dFine << '\n'
-                    << "profile " << sProfile.value << ' ' << sProfile.standardError << ' '
-                    << sProfile.value/dFine << ' ' << sProfile.standardError/dFine << '\n';
+                    << "balance " << sBalance.value << ' ' << sBalance.standardError << ' '
+                    << sBalance.value/dFine << ' ' << sBalance.standardError/dFine << '\n';
         segregation << "# per window (early): ";
         for (double v : earlyS) segregation << ' ' << v;
-        segregation << "\n# per block (profile; a trend says the profile is not yet steady): ";
-        for (double v : profileS) segregation << ' ' << v;
+        segregation << "\n# per block (balance): ";
+        for (double v : balanceS) segregation << ' ' << v;
+        segregation << "\n# per block, the share of the balance carried by the diffusive term D dc/dy: ";
+        for (double v : diffusiveShare) segregation << ' ' << v;
         segregation << '\n';
         segregation << "# the top wall's mean load over the sampling: " << topWallLoad << " sigma_N\n";
         if (std::abs(topWallLoad - 1) > 0.05)
@@ -649,8 +680,9 @@ int main(int argc, char** argv)
             throw std::runtime_error("cannot write " + output + "-profiles.dat, -series.dat or -segregation.dat");
         }
         std::cout << "S (early drift) " << sEarly.value << " +- " << sEarly.standardError
-                  << " m, S (profile's flux balance) " << sProfile.value << " +- " << sProfile.standardError
-                  << " m; C " << D.value/(rate.value*dMean*dMean) << "; the top wall's load "
+                  << " m, S (flux balance) " << sBalance.value << " +- " << sBalance.standardError
+                  << " m (the diffusive term's share " << meanAndStandardError(diffusiveShare).value
+                  << "); C " << D.value/(rate.value*dMean*dMean) << "; the top wall's load "
                   << topWallLoad << " sigma_N\n"
                   << "written " << output << "-series.dat, " << output << "-profiles.dat, "
                   << output << "-segregation.dat\n";

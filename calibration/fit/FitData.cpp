@@ -76,7 +76,8 @@ void validateObservations
         {
             rejectRow(context, row, "x", c.x, "must lie in [0, 1]");
         }
-        if (c.T <= 0.0)
+        // a segregation row (p* given) has no granular temperature: its laws do not read it
+        if (c.T <= 0.0 && !c.pressureNumber)
         {
             rejectRow(context, row, "T", c.T, "must be > 0 [m2/s2]");
         }
@@ -98,6 +99,22 @@ void validateObservations
             if (!(*c.inertialNumber > 0.0))
             {
                 rejectRow(context, row, "inertialNumber", *c.inertialNumber, "must be > 0");
+            }
+        }
+        if (c.pressureNumber)
+        {
+            finite("pressureNumber", *c.pressureNumber);
+            if (!(*c.pressureNumber > 0.0))
+            {
+                rejectRow(context, row, "pressureNumber", *c.pressureNumber, "must be > 0");
+            }
+        }
+        if (c.sizeRatio)
+        {
+            finite("sizeRatio", *c.sizeRatio);
+            if (!(*c.sizeRatio >= 1.0))
+            {
+                rejectRow(context, row, "sizeRatio", *c.sizeRatio, "must be >= 1 (d_coarse/d_fine)");
             }
         }
         if (data[row].sigma <= 0.0)

@@ -28,6 +28,11 @@ struct Condition
     //- Inertial number I = gammaDot d/sqrt(p/rho_s) of a rheology row (the mu(I) and
     //  phi(I) laws of RheologyLaws.hpp read it); absent otherwise.
     std::optional<double> inertialNumber;
+    //- p* = p/(rho_s g dMean) and the size ratio R = d_coarse/d_fine of a segregation
+    //  row (the laws of SegregationLaws.hpp read them, d being the fine diameter);
+    //  absent otherwise.
+    std::optional<double> pressureNumber;
+    std::optional<double> sizeRatio;
 };
 
 //- A measured value (e.g. D_i [m2/s] or eta [m2/s]) at a condition, with its
