@@ -595,11 +595,11 @@ int main(int argc, char** argv)
         // c w_seg = D dc/dy; before it, it holds at every instant the model holds, which is
         // what makes it an estimator independent of the early drift once the diffusive term
         // carries most of it (diffusiveShare). And the interior's conditions.
-        std::vector<double> balanceS, diffusiveShare, pStar, inertial, shearRate, share, diffusivity;
+        std::vector<double> balanceS, diffusiveShare, pStar, inertial, shearRate, share, diffusivity, solids;
         for (int b = 0; b < blocks; ++b)
         {
             auto at = [&](int column, int l) { return blockMeans[std::size_t(column)][std::size_t(l)][std::size_t(b)]; };
-            double diffusive = 0, net = 0, drive = 0, p = 0, gd = 0, c = 0, d = 0, inum = 0;
+            double diffusive = 0, net = 0, drive = 0, p = 0, gd = 0, c = 0, d = 0, inum = 0, phi = 0;
             for (int l = interior.first; l <= interior.last; ++l)
             {
                 const double dcdy = (at(coarseColumn, l + 1) - at(coarseColumn, l - 1))/(2*h);
@@ -609,7 +609,7 @@ int main(int argc, char** argv)
                 diffusive += D*dcdy;
                 net += cl*at(coarseDriftColumn, l);
                 drive += rate*cl*(1 - cl);
-                p += at(sigmaYYColumn, l); gd += rate; c += cl; d += D;
+                p += at(sigmaYYColumn, l); gd += rate; c += cl; d += D; phi += at(phiColumn, l);
                 inum += rate*dMean/std::sqrt(std::max(at(sigmaYYColumn, l), 1e-300)/rhoS);
             }
             const int n = interior.last - interior.first + 1;
@@ -623,6 +623,7 @@ int main(int argc, char** argv)
             shearRate.push_back(gd/n);
             share.push_back(c/n);
             diffusivity.push_back(d/n);
+            solids.push_back(phi/n);
         }
         if (earlyS.empty() || balanceS.empty())
         {
@@ -675,6 +676,19 @@ int main(int argc, char** argv)
                     << rate.standardError << " 1/s, c " << meanAndStandardError(share).value << ", D "
                     << D.value << " +- " << D.standardError << " m2/s, C = D/(gammaDot dMean^2) "
                     << D.value/(rate.value*dMean*dMean) << " (dMean " << dMean << " m)\n";
+        // one line for the fit (fitSegregationVelocity): each estimator with the interior's
+        // c and gammaDot over the time it was read; C = D/(gammaDot dMean^2) of the sampling
+        const double cError = D.standardError/(rate.value*dMean*dMean)
+            + D.value*rate.standardError/(rate.value*rate.value*dMean*dMean);
+        segregation << "# interior (for fitSegregationVelocity): dFine[m] R phi pStar I S_early[m] S_earlyErr"
+                       " c_early gammaDot_early[1/s] S_balance[m] S_balanceErr c gammaDot[1/s] C Cerr"
+                       " topWallLoad\n"
+                    << "interior " << dFine << ' ' << dCoarse/dFine << ' ' << meanAndStandardError(solids).value
+                    << ' ' << meanAndStandardError(pStar).value << ' ' << meanAndStandardError(inertial).value
+                    << ' ' << sEarly.value << ' ' << sEarly.standardError << ' ' << earlyMean.share/n << ' '
+                    << earlyMean.shearRate/n << ' ' << sBalance.value << ' ' << sBalance.standardError << ' '
+                    << meanAndStandardError(share).value << ' ' << rate.value << ' '
+                    << D.value/(rate.value*dMean*dMean) << ' ' << cError << ' ' << topWallLoad << '\n';
         if (!profiles || !series || !segregation)
         {
             throw std::runtime_error("cannot write " + output + "-profiles.dat, -series.dat or -segregation.dat");

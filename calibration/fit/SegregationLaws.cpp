@@ -142,7 +142,6 @@ SegregationFit fitSegregation(const std::vector<SegregationPoint>& points)
     };
     double cWeighted = 0, weights = 0;
     std::vector<double> cs;
-    bool variesBeyondPressure = false;
     for (std::size_t i = 0; i < points.size(); ++i)
     {
         const SegregationPoint& q = points[i];
@@ -172,25 +171,21 @@ SegregationFit fitSegregation(const std::vector<SegregationPoint>& points)
         include(fit.inertialNumbers, q.inertialNumber, first);
         include(fit.sizeRatios, q.sizeRatio, first);
         include(fit.coarseShares, q.coarseShare, first);
-        if (!first && (q.sizeRatio != points[0].sizeRatio || q.coarseShare != points[0].coarseShare))
+        if (q.shearRateDiffusivity > 0 && q.shearRateDiffusivityError > 0)
         {
-            variesBeyondPressure = true;
-        }
-        if (q.diffusivity > 0 && q.diffusivityError > 0)
-        {
-            const double dMean = q.fineDiameter*(1 - q.coarseShare + q.coarseShare*q.sizeRatio);
-            const double scale = q.shearRate*dMean*dMean;
-            const double c = q.diffusivity/scale, e = q.diffusivityError/scale;
-            cWeighted += c/(e*e);
+            const double e = q.shearRateDiffusivityError;
+            cWeighted += q.shearRateDiffusivity/(e*e);
             weights += 1/(e*e);
-            cs.push_back(c);
+            cs.push_back(q.shearRateDiffusivity);
         }
     }
     FitOptions options;
     options.space = FitSpace::linear;
     options.sigmaMeaning = SigmaMeaning::relative;
     fit.fits = {fitLaw(FanSchlickLaw{}, data, options), fitLaw(TrewhelaLaw{}, data, options)};
-    // the asymmetry in c cannot be told from B unless c or R varies
+    // the asymmetry in c cannot be told from B unless c (by 0.1 at least) or R varies
+    const bool variesBeyondPressure =
+        fit.coarseShares.max - fit.coarseShares.min >= 0.1 || fit.sizeRatios.max > fit.sizeRatios.min;
     if (points.size() >= 4 && variesBeyondPressure)
     {
         fit.fits.push_back(fitLaw(TrewhelaAsymmetricLaw{}, data, options));

@@ -66,7 +66,7 @@ struct TrewhelaAsymmetricLaw
 };
 
 //- One cell's interior: its percolation length with its standard error, the conditions
-//  it was measured at and its diffusivity along gravity.
+//  it was measured at and its shear-rate diffusivity along gravity.
 struct SegregationPoint
 {
     double fineDiameter = 0;            // d [m]
@@ -77,7 +77,8 @@ struct SegregationPoint
     double inertialNumber = 0;          // I
     double shearRate = 0;               // gammaDot [1/s]
     double percolationLength = 0, percolationLengthError = 0;   // S [m]
-    double diffusivity = 0, diffusivityError = 0;               // D [m2/s]
+    //- C = D/(gammaDot dMean^2) of the cell's diffusivity along gravity (0: not measured)
+    double shearRateDiffusivity = 0, shearRateDiffusivityError = 0;
 };
 
 //- The fits with their model choice, the shear-rate diffusivity C = D/(gammaDot dMean^2)
@@ -92,7 +93,7 @@ struct SegregationFit
     const FitResult& best() const;
 };
 
-//- Fits (at least 3 cells; trewhelaAsymmetric from 4 cells with more than one c or R
+//- Fits (at least 3 cells; trewhelaAsymmetric from 4 cells over c spanning 0.1 or more than one R
 //  on); throws std::invalid_argument naming what is wrong with a point (S error <= 0,
 //  R < 1, c outside [0, 1], p* <= 0, d <= 0) or the table (too few cells) and
 //  FitFailure when no law converges.

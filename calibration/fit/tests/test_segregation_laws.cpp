@@ -39,7 +39,7 @@ void checkGradient(const Law& law, const Eigen::VectorXd& p)
 }
 
 //- Cells at p* 2-500 (log spaced), each size ratio and share given, S drawn from law
-//  with parameters p and a 5 % Gaussian error; D = 0.05 gammaDot dMean^2 with 3 %.
+//  with parameters p and a 5 % Gaussian error; C = D/(gammaDot dMean^2) 0.05 with 3 %.
 template<class Law>
 std::vector<SegregationPoint> synthetic
 (
@@ -62,9 +62,8 @@ std::vector<SegregationPoint> synthetic
                 q.pressureNumber = pStar; q.inertialNumber = 0.05; q.shearRate = 10;
                 q.percolationLength = S*(1 + 0.05*unit(rng));
                 q.percolationLengthError = 0.05*S;
-                const double dMean = 1e-3*(1 - c + c*R);
-                q.diffusivity = 0.05*10*dMean*dMean*(1 + 0.03*unit(rng));
-                q.diffusivityError = 0.03*0.05*10*dMean*dMean;
+                q.shearRateDiffusivity = 0.05*(1 + 0.03*unit(rng));
+                q.shearRateDiffusivityError = 0.03*0.05;
                 points.push_back(q);
             }
         }
