@@ -9,7 +9,8 @@ wall.txt), per frame the coarse and fine grains' volume-weighted mean v_y minus 
 layer's, averaged over the frames of each of 5 blocks; D per species and layer from the
 y displacements over the same lag as ours, origins every lag within a block, by the
 layer at the origin, D = variance/(2 lag). Errors: block standard errors; a code's seed
-mean carries sqrt(sum of squares)/n.
+mean carries the larger of sqrt(sum of squares)/n and the seeds' own scatter (the standard
+error of the seeds' mean), since the blocks of one run share its trajectory.
 
 Printed: per layer both codes' seed means and the difference in combined standard
 errors; per code the seeds' own scatter; the interior (layers 2-7: two coarse diameters
@@ -98,7 +99,10 @@ def lammps(directory, lag, planes, dt=1e-6):
     frames = list(lammps_frames(directory + "/frames.txt"))
     if ytop0 is None or len(frames) < 2 * BLOCKS:
         sys.exit("analyse: %s: no thermo start or too few frames" % directory)
-    frames = frames[1:]   # ours samples after the first interval of the sampling
+    # ours samples after the first interval of the sampling: the first frame is where the
+    # sampling starts, the origin of the first block's displacements, not a sample
+    origins = frames
+    frames = frames[1:]
     every = frames[1][0] - frames[0][0]
     lag_frames = max(1, int(round(lag/(every*dt))))
 
@@ -133,9 +137,11 @@ def lammps(directory, lag, planes, dt=1e-6):
             for l in range(LAYERS):
                 per_block[q][l].append(sum(drift[q][l])/len(drift[q][l]) if drift[q][l] else 0.0)
         tally = {t: [[0, 0.0, 0.0] for _ in range(LAYERS)] for t in (1, 2)}
-        for k in range(0, len(block) - lag_frames, lag_frames):
-            step0, a0 = block[k]
-            _, a1 = block[k + lag_frames]
+        # as ours: origins every lag from the block's start (the frame before its first
+        # sample), each displacement over one lag within the block
+        for k in range(b*size, (b + 1)*size - lag_frames + 1, lag_frames):
+            step0, a0 = origins[k]
+            _, a1 = origins[k + lag_frames]
             for i, (t, r, y, vy) in a0.items():
                 dy = a1[i][2] - y
                 c = tally[t][layer_of(y, step0)]
@@ -149,10 +155,17 @@ def lammps(directory, lag, planes, dt=1e-6):
 
 
 def seed_mean(per_seed, q, l):
+    """The seeds' mean, its error and the seeds' spread (largest - smallest). The error is
+    the larger of the blocks' (sqrt(sum of squares)/n) and the seeds' own scatter (the
+    standard error of the seeds' mean): blocks of one run share its trajectory (where the
+    shear band sits), so they understate what a second seed shows."""
     values = [s[q][l][0] for s in per_seed]
     errors = [s[q][l][1] for s in per_seed]
     n = len(values)
-    return sum(values)/n, math.sqrt(sum(e*e for e in errors))/n, (max(values) - min(values))
+    mean = sum(values)/n
+    blocks = math.sqrt(sum(e*e for e in errors))/n
+    seeds = math.sqrt(sum((v - mean)**2 for v in values)/(n - 1)/n) if n > 1 else 0.0
+    return mean, max(blocks, seeds), (max(values) - min(values))
 
 
 def main():
@@ -171,7 +184,8 @@ def main():
     chi2, dof, worst = 0.0, 0, 0.0
     for q in QUANTITIES:
         print("\n## %s [%s]" % (q, "m/s" if q.startswith("w") else "m2/s"))
-        print("# layer ours ours_err ours_seedSpread LAMMPS LAMMPS_err LAMMPS_seedSpread z")
+        print("# layer ours ours_err ours_seedSpread LAMMPS LAMMPS_err LAMMPS_seedSpread z"
+              " (err: the larger of the blocks' error and the seeds' scatter)")
         for l in range(LAYERS):
             a, sa, da = seed_mean(codes["ours"], q, l)
             b, sb, db = seed_mean(codes["LAMMPS"], q, l)
