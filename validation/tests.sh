@@ -66,6 +66,61 @@ test_uniform_shear_column()
     "$case/Allrun" -n 100 -gammaDot 100 -tol 1e-3
 }
 
+# The same layer with `percolation calibrated` (libcalibratedModels.so), the law read
+# from constant/granularCoefficients' segregationVelocity: fanSchlick with C_s 0.26 gives
+# the shearRate model's profile (to 1e-10: the same law); trewhela (B 0.2, C 1) under the
+# prescribed flow's lithostatic pressure (p* 0 at the top, 3.5 at the bottom) gives the
+# exact pressure-dependent profile (./pressureProfile) to 1e-3 on 50 cells (measured
+# 3.1e-4; the shearRate profile is 0.22 from it), with the fines and the solids kept to
+# 1e-10 and n >= 0. Refused by name: no granularCoefficients, no segregationVelocity in
+# it, an unknown law, a law's missing parameter
+test_uniform_shear_column_calibrated()
+{
+    local dir="$workRoot/uniformShearColumnCalibrated"
+    rm -rf "$dir"; mkdir -p "$dir"
+    cp -r "$validationDir/uniformShearColumn" "$dir/"
+    local case="$dir/uniformShearColumn"
+    "$case/Allrun" -n 50 -tol 4e-3 > "$dir/log.shearRate" 2>&1 || { tail -20 "$dir/log.shearRate"; return 1; }
+    cp "$case/results/profile.dat" "$dir/profile.shearRate.dat"
+    sed -i '/^percolation/,/^}/s/model       shearRate;/model       calibrated;/' "$case/constant/granularProperties"
+    grep -A2 '^percolation' "$case/constant/granularProperties" | grep -q 'model       calibrated;' \
+        || { echo "the percolation model was not switched"; return 1; }
+    echo 'libs ("libcalibratedModels.so");' >> "$case/system/controlDict"
+    coefficients()   # coefficients 'law entries'
+    {
+        printf 'FoamFile { version 2.0; format ascii; class dictionary; object granularCoefficients; }\n%s\n' \
+            "segregationVelocity { $1 pStarRange (0 1e6); sizeRatioRange (1 10); xRange (0 1); }" \
+            > "$case/constant/granularCoefficients"
+    }
+    coefficients "law fanSchlick; C_s 0.26;"
+    "$case/Allrun" -n 50 -tol 4e-3 > "$dir/log.fanSchlick" 2>&1 || { tail -20 "$dir/log.fanSchlick"; return 1; }
+    (cd "$case" && ./check --same-as "$dir/profile.shearRate.dat" --tol-same 1e-10) | tail -2 || return 1
+    coefficients "law trewhela; B 0.2; C 1;"
+    "$case/Allrun" -n 50 > "$dir/log.trewhela" 2>&1 || { tail -20 "$dir/log.trewhela"; return 1; }
+    grep -q "percolation calibrated: S = B\*dMean\*(R - 1)/(C + pStar).*the pressure: lithostatic" \
+        "$case/log.segregationDegradationFoam" || { echo "the model's log line is missing"; return 1; }
+    (cd "$case" && ./check --bounds-only | tail -4 && ./pressureProfile --tol 1e-3) || return 1
+    # bad input: each refused with its message, no time written
+    local bad
+    for bad in "none|not found: there is no calibration of the segregation velocity" \
+               "other { law trewhela; }|has no segregationVelocity sub-dictionary" \
+               "segregationVelocity { law muI; }|unknown segregation law 'muI' (valid: fanSchlick, trewhela, trewhelaAsymmetric)" \
+               "segregationVelocity { law trewhela; B 0.2; pStarRange (0 1); sizeRatioRange (1 3); xRange (0 1); }|law trewhela needs the parameter 'C', not found"
+    do
+        local body="${bad%%|*}" message="${bad#*|}"
+        rm -f "$case/constant/granularCoefficients"
+        [ "$body" = none ] || printf 'FoamFile { version 2.0; format ascii; class dictionary; object granularCoefficients; }\n%s\n' \
+            "$body" > "$case/constant/granularCoefficients"
+        if "$case/Allrun" -n 10 > "$dir/log.bad" 2>&1
+        then
+            echo "accepted: $body"; return 1
+        fi
+        grep -qF "$message" "$case/log.segregationDegradationFoam" \
+            || { echo "refused without '$message':"; grep -A6 FATAL "$case/log.segregationDegradationFoam"; return 1; }
+        echo "refused as it should: $message"
+    done
+}
+
 # fresh_validation_case WORK CASE: a fresh copy of validation/CASE in
 # $workRoot/WORK; prints the copy's path
 fresh_validation_case()

@@ -116,6 +116,17 @@ Eigen::VectorXd TrewhelaAsymmetricLaw::initialParameters(const std::vector<Obser
     return p;
 }
 
+ConstitutiveLaw segregationLawFromName(const std::string& name)
+{
+    if (name == "fanSchlick") return FanSchlickLaw{};
+    if (name == "trewhela") return TrewhelaLaw{};
+    if (name == "trewhelaAsymmetric") return TrewhelaAsymmetricLaw{};
+    throw std::invalid_argument
+    (
+        "unknown segregation law '" + name + "' (valid: fanSchlick, trewhela, trewhelaAsymmetric)"
+    );
+}
+
 // ---------------------------------------------------------------- the fit
 
 const FitResult& SegregationFit::best() const

@@ -65,6 +65,10 @@ struct TrewhelaAsymmetricLaw
     std::vector<std::pair<std::string, double>> fixedEntries() const { return {}; }
 };
 
+//- The law of that name (fanSchlick, trewhela, trewhelaAsymmetric), for the solver to
+//  evaluate what the fit wrote; throws std::invalid_argument naming the valid ones.
+ConstitutiveLaw segregationLawFromName(const std::string& name);
+
 //- One cell's interior: its percolation length with its standard error, the conditions
 //  it was measured at and its shear-rate diffusivity along gravity.
 struct SegregationPoint

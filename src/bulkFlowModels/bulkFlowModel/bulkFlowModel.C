@@ -11,6 +11,7 @@
 #include "fvc.H"
 #include "wallFvPatch.H"
 #include "calculatedFvPatchFields.H"
+#include "extrapolatedCalculatedFvPatchFields.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -111,6 +112,48 @@ void Foam::bulkFlowModel::updateFluxFromU()
 Foam::tmp<Foam::volScalarField> Foam::bulkFlowModel::gammaDot() const
 {
     return sqrt(2.0)*mag(symm(fvc::grad(U_)));
+}
+
+
+Foam::tmp<Foam::volScalarField> Foam::bulkFlowModel::pressure() const
+{
+    const fvMesh& mesh = mixture_.mesh();
+    const vector g = mixture_.gravity();
+    const vector up = -g/mag(g);
+    const scalar hTop = gMax(mesh.points() & up);
+    volScalarField::Internal rhoBulk
+    (
+        IOobject("bulkFlowModel:rhoBulk", mesh.time().timeName(), mesh),
+        mesh,
+        dimensionedScalar(dimDensity, Zero)
+    );
+    forAll(mixture_.n(), i)
+    {
+        rhoBulk += dimensionedScalar("rho", dimDensity, mixture_.rho(i))*mixture_.n()[i]();
+    }
+    tmp<volScalarField> tp
+    (
+        new volScalarField
+        (
+            IOobject
+            (
+                "bulkFlowModel:p",
+                mesh.time().timeName(),
+                mesh,
+                IOobject::NO_READ,
+                IOobject::NO_WRITE,
+                false
+            ),
+            mesh,
+            dimensionedScalar(dimPressure, Zero),
+            extrapolatedCalculatedFvPatchScalarField::typeName
+        )
+    );
+    volScalarField& p = tp.ref();
+    const scalarField h(mesh.C().primitiveField() & up);
+    p.primitiveFieldRef() = rhoBulk.field()*mag(g)*max(hTop - h, scalar(0));
+    p.correctBoundaryConditions();
+    return tp;
 }
 
 

@@ -1371,6 +1371,12 @@ void Foam::bulkFlowModels::muI::checkFillOverflow()
 }
 
 
+Foam::tmp<Foam::volScalarField> Foam::bulkFlowModels::muI::pressure() const
+{
+    return max(p_, dimensionedScalar(dimPressure, Zero));
+}
+
+
 void Foam::bulkFlowModels::muI::correct()
 {
     if (deposition_.valid())

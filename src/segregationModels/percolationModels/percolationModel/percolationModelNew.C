@@ -7,6 +7,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "percolationModel.H"
+#include "modelCoeffs.H"
 
 Foam::autoPtr<Foam::percolationModel> Foam::percolationModel::New
 (
@@ -29,7 +30,8 @@ Foam::autoPtr<Foam::percolationModel> Foam::percolationModel::New
             "percolation model",
             modelType,
             *dictionaryConstructorTablePtr_
-        ) << exit(FatalIOError);
+        )   << modelCoeffs::libraryHint(modelType)
+            << exit(FatalIOError);
     }
 
     return autoPtr<percolationModel>(cstrIter()(dict, mixture, bulkFlow));
