@@ -10,7 +10,8 @@
 //               drift of the mixed start, the cleaner where the profile has not
 //               developed; balance: the flux balance of the sampled profile)
 //   -output     the segregationVelocity and shearRateDiffusivity entries are written
-//               there (default segregationVelocityCoeffs), for constant/granularCoefficients
+//               there as an OpenFOAM dictionary (default segregationVelocityCoeffs): a
+//               case reads it from constant/ (percolation calibrated { file <name>; })
 // A cell whose top wall did not carry its load (off by more than 5 %) is refused by name:
 // it was not at the condition it claims.
 #include "fit/SegregationLaws.hpp"
@@ -107,9 +108,16 @@ int main(int argc, char** argv)
         }
         const sdf::fit::SegregationFit fit = sdf::fit::fitSegregation(points);
         std::cout << sdf::fit::segregationFitSummary(fit);
+        // an OpenFOAM dictionary of its own (object: the file's name), so that a case can
+        // read it as it is (percolation calibrated { file <name>; }) or take its entries
+        // into constant/granularCoefficients
+        const std::string object = output.substr(output.find_last_of('/') + 1);
         std::ofstream out(output);
-        out << "// fitSegregationVelocity -estimator " << estimator << " on " << files.size() << " cells\n"
-            << sdf::fit::segregationVelocityEntries(fit);
+        out << "FoamFile\n{\n    version     2.0;\n    format      ascii;\n    class       dictionary;\n"
+            << "    location    \"constant\";\n    object      " << object << ";\n}\n"
+            << "// fitSegregationVelocity -estimator " << estimator << " on " << files.size() << " cells:\n";
+        for (const std::string& f : files) out << "//   " << f << "\n";
+        out << sdf::fit::segregationVelocityEntries(fit);
         if (!out) throw std::runtime_error("cannot write " + output);
         std::cout << "written " << output << "\n";
     }
