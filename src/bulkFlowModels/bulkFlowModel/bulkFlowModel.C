@@ -12,6 +12,7 @@
 #include "wallFvPatch.H"
 #include "calculatedFvPatchFields.H"
 #include "extrapolatedCalculatedFvPatchFields.H"
+#include "scratchField.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -133,20 +134,16 @@ Foam::tmp<Foam::volScalarField> Foam::bulkFlowModel::pressure() const
     }
     tmp<volScalarField> tp
     (
-        new volScalarField
+        scratchField
         (
-            IOobject
-            (
-                "bulkFlowModel:p",
-                mesh.time().timeName(),
-                mesh,
-                IOobject::NO_READ,
-                IOobject::NO_WRITE,
-                false
-            ),
             mesh,
-            dimensionedScalar(dimPressure, Zero),
-            extrapolatedCalculatedFvPatchScalarField::typeName
+            "bulkFlowModel:p",
+            dimPressure,
+            wordList
+            (
+                mesh.boundary().size(),
+                extrapolatedCalculatedFvPatchScalarField::typeName
+            )
         )
     );
     volScalarField& p = tp.ref();

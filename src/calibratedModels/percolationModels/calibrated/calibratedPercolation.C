@@ -11,6 +11,7 @@
 #include "modelCoeffs.H"
 #include "surfaceInterpolate.H"
 #include "IOdictionary.H"
+#include "scratchField.H"
 #include "OSspecific.H"
 #include "fit/SegregationLaws.hpp"
 
@@ -83,6 +84,23 @@ Foam::dictionary segregationVelocityDict
 }
 
 
+//- The law the dictionary names, or a FatalIOError listing the valid ones
+sdf::fit::ConstitutiveLaw lawNamedIn(const Foam::dictionary& dict)
+{
+    using namespace Foam;
+    try
+    {
+        return sdf::fit::segregationLawFromName(dict.get<word>("law"));
+    }
+    catch (const std::invalid_argument& e)
+    {
+        FatalIOErrorInFunction(dict)
+            << "segregationVelocity: " << e.what() << nl << exit(FatalIOError);
+    }
+    return sdf::fit::FanSchlickLaw{};   // not reached
+}
+
+
 Foam::Pair<Foam::scalar> readRange(const Foam::dictionary& dict, const Foam::word& key)
 {
     using namespace Foam;
@@ -113,67 +131,20 @@ Foam::percolationModels::calibrated::calibrated
         mixture
     ),
     bulkFlow_(bulkFlow),
-    law_(sdf::fit::FanSchlickLaw{}),
+    lawDict_(segregationVelocityDict(mixture, coeffs_)),
+    law_(lawNamedIn(lawDict_)),
     parameters_(),
     outside_
     (
         outsidePolicyNames.getOrDefault("outsideEnvelope", coeffs_, outsidePolicy::clamp)
     ),
     gSf_(gravityFaceAreas(mixture)),
-    gammaDotf_
-    (
-        IOobject
-        (
-            "calibratedPercolation:gammaDotf",
-            mixture.mesh().time().timeName(),
-            mixture.mesh(),
-            IOobject::NO_READ,
-            IOobject::NO_WRITE,
-            false
-        ),
-        mixture.mesh(),
-        dimensionedScalar(dimless/dimTime, Zero)
-    ),
-    pStarf_
-    (
-        IOobject
-        (
-            "calibratedPercolation:pStarf",
-            mixture.mesh().time().timeName(),
-            mixture.mesh(),
-            IOobject::NO_READ,
-            IOobject::NO_WRITE,
-            false
-        ),
-        mixture.mesh(),
-        dimensionedScalar(dimless, Zero)
-    ),
-    xf_
-    (
-        IOobject
-        (
-            "calibratedPercolation:xf",
-            mixture.mesh().time().timeName(),
-            mixture.mesh(),
-            IOobject::NO_READ,
-            IOobject::NO_WRITE,
-            false
-        ),
-        mixture.mesh(),
-        dimensionedScalar(dimless, Zero)
-    )
+    gammaDotf_(scratchSurfaceField(mixture.mesh(), "calibratedPercolation:gammaDotf", dimless/dimTime)),
+    pStarf_(scratchSurfaceField(mixture.mesh(), "calibratedPercolation:pStarf", dimless)),
+    xf_(scratchSurfaceField(mixture.mesh(), "calibratedPercolation:xf", dimless))
 {
-    const dictionary law(segregationVelocityDict(mixture, coeffs_));
-    const word name(law.get<word>("law"));
-    try
-    {
-        law_ = sdf::fit::segregationLawFromName(name);
-    }
-    catch (const std::invalid_argument& e)
-    {
-        FatalIOErrorInFunction(law)
-            << "segregationVelocity: " << e.what() << nl << exit(FatalIOError);
-    }
+    const dictionary& law = lawDict_;
+    const word name(law_.name());
     const std::vector<std::string> names = law_.parameterNames();
     parameters_.resize(label(names.size()));
     for (std::size_t k = 0; k < names.size(); ++k)
