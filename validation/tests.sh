@@ -73,7 +73,7 @@ test_uniform_shear_column()
 # exact pressure-dependent profile (./pressureProfile) to 1e-3 on 50 cells (measured
 # 3.1e-4; the shearRate profile is 0.22 from it), with the fines and the solids kept to
 # 1e-10 and n >= 0. Refused by name: no granularCoefficients, no segregationVelocity in
-# it, an unknown law, a law's missing parameter
+# it, an unknown law, a law's missing parameter, a pressure law with C <= 0
 test_uniform_shear_column_calibrated()
 {
     local dir="$workRoot/uniformShearColumnCalibrated"
@@ -94,18 +94,24 @@ test_uniform_shear_column_calibrated()
     }
     coefficients "law fanSchlick; C_s 0.26;"
     "$case/Allrun" -n 50 -tol 4e-3 > "$dir/log.fanSchlick" 2>&1 || { tail -20 "$dir/log.fanSchlick"; return 1; }
-    (cd "$case" && ./check --same-as "$dir/profile.shearRate.dat" --tol-same 1e-10) | tail -2 || return 1
+    local out
+    out=$(cd "$case" && ./check --same-as "$dir/profile.shearRate.dat" --tol-same 1e-10) \
+        || { echo "$out"; return 1; }
+    tail -n 2 <<< "$out"
     coefficients "law trewhela; B 0.2; C 1;"
     "$case/Allrun" -n 50 > "$dir/log.trewhela" 2>&1 || { tail -20 "$dir/log.trewhela"; return 1; }
     grep -q "percolation calibrated: S = B\*dMean\*(R - 1)/(C + pStar).*the pressure: lithostatic" \
         "$case/log.segregationDegradationFoam" || { echo "the model's log line is missing"; return 1; }
-    (cd "$case" && ./check --bounds-only | tail -4 && ./pressureProfile --tol 1e-3) || return 1
+    out=$(cd "$case" && ./check --bounds-only) || { echo "$out"; return 1; }
+    tail -n 4 <<< "$out"
+    (cd "$case" && ./pressureProfile --tol 1e-3) || return 1
     # bad input: each refused with its message, no time written
     local bad
     for bad in "none|not found: there is no calibration of the segregation velocity" \
                "other { law trewhela; }|has no segregationVelocity sub-dictionary" \
                "segregationVelocity { law muI; }|unknown segregation law 'muI' (valid: fanSchlick, trewhela, trewhelaAsymmetric)" \
-               "segregationVelocity { law trewhela; B 0.2; pStarRange (0 1); sizeRatioRange (1 3); xRange (0 1); }|law trewhela needs the parameter 'C', not found"
+               "segregationVelocity { law trewhela; B 0.2; pStarRange (0 1); sizeRatioRange (1 3); xRange (0 1); }|law trewhela needs the parameter 'C', not found" \
+               "segregationVelocity { law trewhela; B 0.2; C -1; pStarRange (0 1); sizeRatioRange (1 3); xRange (0 1); }|C must be > 0"
     do
         local body="${bad%%|*}" message="${bad#*|}"
         rm -f "$case/constant/granularCoefficients"

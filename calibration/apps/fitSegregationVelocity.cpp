@@ -6,9 +6,10 @@
 //
 //   fitSegregationVelocity [-estimator early|balance] [-output FILE] cell-segregation.dat ...
 //
-//   -estimator  which of the cell's two estimators of S is fitted (default early: the
-//               drift of the mixed start, the cleaner where the profile has not
-//               developed; balance: the flux balance of the sampled profile)
+//   -estimator  which of the cell's two estimators of S is fitted (default balance: the
+//               flux balance of the sampled profile, read over the same time as the
+//               cell's p*, I, c and gammaDot, the diffusive back-flux included; early:
+//               the drift of the mixed start, with the c and gammaDot of its windows)
 //   -output     the segregationVelocity and shearRateDiffusivity entries are written
 //               there as an OpenFOAM dictionary (default segregationVelocityCoeffs): a
 //               case reads it from constant/ (percolation calibrated { file <name>; })
@@ -70,7 +71,7 @@ int main(int argc, char** argv)
 {
     try
     {
-        std::string estimator = "early", output = "segregationVelocityCoeffs";
+        std::string estimator = "balance", output = "segregationVelocityCoeffs";
         std::vector<std::string> files;
         for (int i = 1; i < argc; ++i)
         {

@@ -121,7 +121,20 @@ Foam::tmp<Foam::volScalarField> Foam::bulkFlowModel::pressure() const
     const fvMesh& mesh = mixture_.mesh();
     const vector g = mixture_.gravity();
     const vector up = -g/mag(g);
-    const scalar hTop = gMax(mesh.points() & up);
+    // the material's top: the highest point of the cells holding material
+    // (phi >= phiMin), so that a silo's descending free surface is followed
+    const scalarField& phi = mixture_.nTotal().primitiveField();
+    const pointField& points = mesh.points();
+    scalar hTop = -GREAT;
+    forAll(phi, celli)
+    {
+        if (phi[celli] < mixture_.phiMin()) continue;
+        for (const label pointi : mesh.cellPoints()[celli])
+        {
+            hTop = max(hTop, points[pointi] & up);
+        }
+    }
+    hTop = returnReduce(hTop, maxOp<scalar>());
     volScalarField::Internal rhoBulk
     (
         IOobject("bulkFlowModel:rhoBulk", mesh.time().timeName(), mesh),

@@ -164,6 +164,19 @@ Foam::percolationModels::calibrated::calibrated
     sizeRatioMin_ = R.first(); sizeRatioMax_ = R.second();
     xMin_ = x.first(); xMax_ = x.second();
 
+    // the pressure laws' S = B dMean (R - 1)/(C + p*) is infinite where p* = -C:
+    // C must be > 0, so that S stays finite from the free surface (p* 0) down
+    for (std::size_t k = 0; k < names.size(); ++k)
+    {
+        if (names[k] == "C" && !(parameters_[label(k)] > 0))
+        {
+            FatalIOErrorInFunction(law)
+                << "segregationVelocity: law " << name << " with C "
+                << parameters_[label(k)] << ": C must be > 0 (S goes as 1/(C + p*),"
+                << " p* >= 0)" << nl << exit(FatalIOError);
+        }
+    }
+
     Info<< "    percolation calibrated: S = " << law_.formula().c_str() << ',';
     for (std::size_t k = 0; k < names.size(); ++k)
     {
