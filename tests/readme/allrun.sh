@@ -7,7 +7,7 @@
 
 # The documented outcome of the default silo2D run (tutorials/silo2D/README.md,
 # "What it shows"; docs/user/outputs.md): the fields each written time
-# holds, the wedge's mass flow, the outflow's coarse-fraction peak
+# holds, the wedge's mass flow, the outflow's coarse fraction
 readme_silo2D_checks()
 {
     local case="$1"
@@ -43,14 +43,15 @@ coarse = [float(r[col["massFraction.coarse"]]) for r in rows]
 Q = hopperRate(0.04, 1.2e-3, 30)
 mBeverloo = Q * math.sin(math.radians(5)) / (2 * math.pi) * 0.6 * 2500
 dev = max(abs(m / mBeverloo - 1) for m in mdot)
-i = max(range(len(coarse)), key=coarse.__getitem__)
+spread = max(abs(c - 0.20) for c in coarse)
 print("outlet: %d rows to t = %g s; mass flow within %.2e of Beverloo's %.5e kg/s; "
-      "coarse fraction %.4f at t = 0, peak %.4f at %.2f s, %.4f at the end"
-      % (len(rows), t[-1], dev, mBeverloo, coarse[0], coarse[i], t[i], coarse[-1]))
+      "coarse fraction within %.2e of the feed's 0.20 throughout"
+      % (len(rows), t[-1], dev, mBeverloo, spread))
 ok = abs(t[-1] - 30) < 1e-9 and dev < 1e-3
-# the README's description: from 0.20 to 0.43 at t ~ 19 s, then 0.10 at 30 s
-ok = ok and abs(coarse[0] - 0.20) < 1e-3 and abs(coarse[i] - 0.43) < 0.005 and abs(t[i] - 19) < 1
-ok = ok and abs(coarse[-1] - 0.10) < 0.005
+# the README's description: with the DEM-calibrated closures the well-mixed silo's
+# outflow stays at its 0.20 coarse within 1e-3 over the 30 s (the seed's kinetic
+# sieving took it to 0.43: Allrun -seedClosures)
+ok = ok and spread < 1e-3
 sys.exit(0 if ok else 1)
 PY
 }
