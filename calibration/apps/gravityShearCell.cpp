@@ -323,6 +323,7 @@ int main(int argc, char** argv)
         const int coarse = int(settings.species.size()) - 1;
         requireCoarseLast(settings, true);
         const double dCoarse = settings.species.back().diameter;
+        const double dFine = settings.species.front().diameter;
         double dMin = dCoarse;
         for (const Species& s : settings.species) dMin = std::min(dMin, s.diameter);
         const double layersValue = configNumber(config, "layers", 10);
@@ -599,16 +600,24 @@ int main(int argc, char** argv)
         for (int b = 0; b < blocks; ++b)
         {
             auto at = [&](int column, int l) { return blockMeans[std::size_t(column)][std::size_t(l)][std::size_t(b)]; };
+            // p* and c weighted as the balance weighs its layers (gammaDot c (1 - c)), p*
+            // with each layer's own dMean, as the solver evaluates the law; plain means
+            // where nothing segregates (an unsheared or one-species interior)
             double diffusive = 0, net = 0, drive = 0, p = 0, gd = 0, c = 0, d = 0, inum = 0, phi = 0;
+            double pWeighted = 0, cWeighted = 0;
             for (int l = interior.first; l <= interior.last; ++l)
             {
                 const double dcdy = (at(coarseColumn, l + 1) - at(coarseColumn, l - 1))/(2*h);
                 const double rate = (at(velocityColumn, l + 1) - at(velocityColumn, l - 1))/(2*h);
                 const double D = blockD[2][std::size_t(l)][std::size_t(b)];
                 const double cl = at(coarseColumn, l);
+                const double weight = rate*cl*(1 - cl);
+                const double dMeanLayer = dFine + cl*(dCoarse - dFine);
                 diffusive += D*dcdy;
                 net += cl*at(coarseDriftColumn, l);
-                drive += rate*cl*(1 - cl);
+                drive += weight;
+                pWeighted += weight*at(sigmaYYColumn, l)/(rhoS*cellSettings.gravity*dMeanLayer);
+                cWeighted += weight*cl;
                 p += at(sigmaYYColumn, l); gd += rate; c += cl; d += D; phi += at(phiColumn, l);
                 inum += rate*dMean/std::sqrt(std::max(at(sigmaYYColumn, l), 1e-300)/rhoS);
             }
@@ -616,12 +625,17 @@ int main(int argc, char** argv)
             if (drive > 0)
             {
                 balanceS.push_back((net + diffusive)/drive);
-                diffusiveShare.push_back(diffusive/(net + diffusive));
+                if (std::abs(net + diffusive) > 0) diffusiveShare.push_back(diffusive/(net + diffusive));
+                pStar.push_back(pWeighted/drive);
+                share.push_back(cWeighted/drive);
             }
-            pStar.push_back(p/n/(rhoS*cellSettings.gravity*dMean));
+            else
+            {
+                pStar.push_back(p/n/(rhoS*cellSettings.gravity*dMean));
+                share.push_back(c/n);
+            }
             inertial.push_back(inum/n);
             shearRate.push_back(gd/n);
-            share.push_back(c/n);
             diffusivity.push_back(d/n);
             solids.push_back(phi/n);
         }
@@ -646,7 +660,6 @@ int main(int argc, char** argv)
                     << " errors: standard errors over " << driftWindows << " windows (early) and "
                     << blocks << " blocks (balance)\n"
                     << "# estimator S[m] S_err[m] S/dFine S/dFine_err\n";
-        const double dFine = settings.species.front().diameter;
         segregation << "early " << sEarly.value << ' ' << sEarly.standardError << ' '
                     << sEarly.value/dFine << ' ' << sEarly.standardError/dFine << '\n'
                     << "balance " << sBalance.value << ' ' << sBalance.standardError << ' '

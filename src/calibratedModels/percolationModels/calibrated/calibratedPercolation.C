@@ -46,32 +46,31 @@ Foam::dictionary segregationVelocityDict
 {
     using namespace Foam;
     const word file(coeffs.getOrDefault<word>("file", "granularCoefficients"));
-    const fileName path(mixture.mesh().time().constant()/file);
     const word howTo
     (
         "run gravityShearCell at the case's pressures and fitSegregationVelocity on"
         " its -segregation.dat files (docs/user/calibration.md), and put the"
         " segregationVelocity entries it writes into constant/" + file
     );
-    if (!isFile(path))
+    // the case's constant/ (in parallel the undecomposed case's), wherever the
+    // solver runs from
+    IOobject io
+    (
+        file,
+        mixture.mesh().time().constant(),
+        mixture.mesh(),
+        IOobject::MUST_READ,
+        IOobject::NO_WRITE,
+        false
+    );
+    if (!io.typeHeaderOk<IOdictionary>(false))
     {
         FatalIOErrorInFunction(coeffs)
-            << "percolation calibrated: " << path << " not found: there is no"
-            << " calibration of the segregation velocity; " << howTo.c_str()
+            << "percolation calibrated: " << io.objectPath() << " not found: there"
+            << " is no calibration of the segregation velocity; " << howTo.c_str()
             << nl << exit(FatalIOError);
     }
-    const IOdictionary coefficients
-    (
-        IOobject
-        (
-            file,
-            mixture.mesh().time().constant(),
-            mixture.mesh(),
-            IOobject::MUST_READ,
-            IOobject::NO_WRITE,
-            false
-        )
-    );
+    const IOdictionary coefficients(io);
     if (!coefficients.isDict("segregationVelocity"))
     {
         FatalIOErrorInFunction(coefficients)
