@@ -369,36 +369,53 @@ Foam::tmp<Foam::volScalarField> Foam::granularMixture::coarseFraction() const
 }
 
 
-Foam::tmp<Foam::volScalarField> Foam::granularMixture::dMean() const
+Foam::tmp<Foam::volScalarField> Foam::granularMixture::speciesMean
+(
+    const word& name,
+    const scalarList& values,
+    const dimensionSet& dims
+) const
 {
-    tmp<volScalarField> tdMean
+    tmp<volScalarField> tmean
     (
         volScalarField::New
         (
-            "dMean",
+            name,
             mesh_,
-            dimensionedScalar("s", dimLength, Zero),
+            dimensionedScalar("s", dims, Zero),
             zeroGradientFvPatchScalarField::typeName
         )
     );
-    volScalarField& dm = tdMean.ref();
+    volScalarField& mean = tmean.ref();
     forAll(n_, i)
     {
-        dm += dimensionedScalar("s", dimLength, d_[i])*c(i);
+        mean += dimensionedScalar("s", dims, values[i])*c(i);
     }
 
-    // Empty cells take the mean of the species diameters so that every law
+    // Empty cells take the mean of the species' values so that every law
     // stays finite there
-    const scalar dAvg = average(d_);
-    forAll(dm, celli)
+    const scalar average = Foam::average(values);
+    forAll(mean, celli)
     {
         if (nTotal_[celli] <= SMALL)
         {
-            dm[celli] = dAvg;
+            mean[celli] = average;
         }
     }
-    dm.correctBoundaryConditions();
-    return tdMean;
+    mean.correctBoundaryConditions();
+    return tmean;
+}
+
+
+Foam::tmp<Foam::volScalarField> Foam::granularMixture::dMean() const
+{
+    return speciesMean("dMean", d_, dimLength);
+}
+
+
+Foam::tmp<Foam::volScalarField> Foam::granularMixture::solidsDensity() const
+{
+    return speciesMean("rhoS", rho_, dimDensity);
 }
 
 

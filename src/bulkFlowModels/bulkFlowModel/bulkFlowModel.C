@@ -135,16 +135,6 @@ Foam::tmp<Foam::volScalarField> Foam::bulkFlowModel::pressure() const
         }
     }
     hTop = returnReduce(hTop, maxOp<scalar>());
-    volScalarField::Internal rhoBulk
-    (
-        IOobject("bulkFlowModel:rhoBulk", mesh.time().timeName(), mesh),
-        mesh,
-        dimensionedScalar(dimDensity, Zero)
-    );
-    forAll(mixture_.n(), i)
-    {
-        rhoBulk += dimensionedScalar("rho", dimDensity, mixture_.rho(i))*mixture_.n()[i]();
-    }
     tmp<volScalarField> tp
     (
         scratchField
@@ -161,7 +151,9 @@ Foam::tmp<Foam::volScalarField> Foam::bulkFlowModel::pressure() const
     );
     volScalarField& p = tp.ref();
     const scalarField h(mesh.C().primitiveField() & up);
-    p.primitiveFieldRef() = rhoBulk.field()*mag(g)*max(hTop - h, scalar(0));
+    p.primitiveFieldRef() =
+        mixture_.nTotal().primitiveField()*mixture_.solidsDensity()().primitiveField()
+       *mag(g)*max(hTop - h, scalar(0));
     p.correctBoundaryConditions();
     return tp;
 }

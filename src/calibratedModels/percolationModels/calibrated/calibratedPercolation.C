@@ -249,27 +249,14 @@ void Foam::percolationModels::calibrated::checkEnvelope
 
 void Foam::percolationModels::calibrated::correct()
 {
-    const scalar g = mag(mixture_.gravity());
-    // the cell's solids density (the species' mean where there are no solids)
-    volScalarField rhoS(mixture_.nTotal()*dimensionedScalar("0", dimDensity, Zero));
-    scalar rhoMean = 0;
-    forAll(mixture_.n(), i)
-    {
-        rhoS += dimensionedScalar("rho", dimDensity, mixture_.rho(i))*mixture_.n()[i];
-        rhoMean += mixture_.rho(i)/mixture_.size();
-    }
-    const volScalarField phi
-    (
-        max(mixture_.nTotal(), dimensionedScalar("small", dimless, SMALL))
-    );
-    rhoS = rhoS/phi + dimensionedScalar("rho", dimDensity, rhoMean)*pos0(SMALL - mixture_.nTotal());
-    const volScalarField dMean
-    (
-        max(mixture_.dMean(), dimensionedScalar("dMin", dimLength, mixture_.dMin()))
-    );
     const volScalarField pStar
     (
-        bulkFlow_.pressure()/(rhoS*dimensionedScalar("g", dimAcceleration, g)*dMean)
+        bulkFlow_.pressure()
+       /(
+            mixture_.solidsDensity()
+           *dimensionedScalar("g", dimAcceleration, mag(mixture_.gravity()))
+           *mixture_.dMean()
+        )
     );
     const volScalarField x(mixture_.coarseFraction());
     if (outside_ == outsidePolicy::error)
