@@ -131,9 +131,9 @@ int main(int argc, char** argv)
 
         const GravityShearRunResult result = runGravityShearCell(run, &std::cout);
         writeGravityShearFiles(result, output);
-        if (!result.segregation.loaded())
+        if (!result.segregation.unreachedState().empty())
         {
-            std::cout << topWallLoadWarning(result.segregation.topWallLoad) << '\n';
+            std::cout << "warning: " << result.segregation.unreachedState() << '\n';
         }
         std::cout << gravityShearSummary(result.segregation) << '\n'
                   << "written " << output << "-series.dat, " << output << "-profiles.dat, "

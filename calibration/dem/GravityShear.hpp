@@ -118,6 +118,9 @@ public:
     void resetWallStresses();
     //- The steps the means since the last reset are over
     long wallStressSteps() const { return forceSteps_; }
+    //- The time since the top wall landed [s] (0 before; its speed ramps up over one
+    //  strain gap/U from then)
+    double slidingTime() const { return slidingTime_; }
 
 private:
     GravityShearSettings settings_;

@@ -75,6 +75,50 @@ RheologyRecord readRheology(const io::Group& g)
 }
 
 
+//- The attributes of the group `segregation`: one list for the writer and the reader
+const std::vector<std::pair<const char*, double SegregationRecord::*>>& segregationAttributes()
+{
+    static const std::vector<std::pair<const char*, double SegregationRecord::*>> attributes
+    {
+        {"normalStress", &SegregationRecord::normalStress},
+        {"wallSpeed", &SegregationRecord::wallSpeed},
+        {"fineDiameter", &SegregationRecord::fineDiameter},
+        {"sizeRatio", &SegregationRecord::sizeRatio},
+        {"meanDiameter", &SegregationRecord::meanDiameter},
+        {"solidsFraction", &SegregationRecord::solidsFraction},
+        {"pressureNumber", &SegregationRecord::pressureNumber},
+        {"inertialNumber", &SegregationRecord::inertialNumber},
+        {"percolationLengthEarly", &SegregationRecord::early},
+        {"percolationLengthEarlyError", &SegregationRecord::earlyError},
+        {"earlyCoarseShare", &SegregationRecord::earlyCoarseShare},
+        {"earlyShearRate", &SegregationRecord::earlyShearRate},
+        {"percolationLengthBalance", &SegregationRecord::balance},
+        {"percolationLengthBalanceError", &SegregationRecord::balanceError},
+        {"coarseShare", &SegregationRecord::coarseShare},
+        {"shearRate", &SegregationRecord::shearRate},
+        {"shearRateError", &SegregationRecord::shearRateError},
+        {"diffusivity", &SegregationRecord::diffusivity},
+        {"diffusivityError", &SegregationRecord::diffusivityError},
+        {"shearRateDiffusivity", &SegregationRecord::shearRateDiffusivity},
+        {"shearRateDiffusivityError", &SegregationRecord::shearRateDiffusivityError},
+        {"diffusiveShare", &SegregationRecord::diffusiveShare},
+        {"topWallLoad", &SegregationRecord::topWallLoad}
+    };
+    return attributes;
+}
+
+
+SegregationRecord readSegregation(const io::Group& g)
+{
+    SegregationRecord r;
+    for (const auto& [name, member] : segregationAttributes())
+    {
+        r.*member = g.readDouble(name);
+    }
+    return r;
+}
+
+
 SpeciesRecord readSpecies(const io::Group& g)
 {
     SpeciesRecord s;
@@ -351,6 +395,18 @@ std::string rheologyConditionName
 }
 
 
+std::string segregationConditionName(double normalStress, double x, std::int64_t seed)
+{
+    char name[160];
+    std::snprintf
+    (
+        name, sizeof name, "segregation_sigma%.6g_x%.6g_seed%lld", normalStress, x,
+        static_cast<long long>(seed)
+    );
+    return name;
+}
+
+
 std::string sizedConditionName(const std::string& name, std::int64_t particles)
 {
     return name + "_N" + std::to_string(particles);
@@ -532,6 +588,91 @@ void appendCondition
 }
 
 
+SegregationRecord segregationRecordOf(const dem::GravityShearRunResult& result)
+{
+    const dem::SegregationMeasurement& m = result.segregation;
+    SegregationRecord r;
+    r.normalStress = result.settings.walls.normalStress;
+    r.wallSpeed = result.settings.walls.wallSpeed;
+    r.fineDiameter = m.fineDiameter;
+    r.sizeRatio = m.sizeRatio;
+    r.meanDiameter = m.meanDiameter;
+    r.solidsFraction = m.solidsFraction;
+    r.pressureNumber = m.pressureNumber;
+    r.inertialNumber = m.inertialNumber;
+    r.early = m.early.value;
+    r.earlyError = m.early.standardError;
+    r.earlyCoarseShare = m.earlyCoarseShare;
+    r.earlyShearRate = m.earlyShearRate;
+    r.balance = m.balance.value;
+    r.balanceError = m.balance.standardError;
+    r.coarseShare = m.coarseShare;
+    r.shearRate = m.shearRate.value;
+    r.shearRateError = m.shearRate.standardError;
+    r.diffusivity = m.diffusivity.value;
+    r.diffusivityError = m.diffusivity.standardError;
+    r.shearRateDiffusivity = m.shearRateDiffusivity.value;
+    r.shearRateDiffusivityError = m.shearRateDiffusivity.standardError;
+    r.diffusiveShare = m.diffusiveShare;
+    r.topWallLoad = m.topWallLoad;
+    return r;
+}
+
+
+void appendSegregationCondition
+(
+    const std::string& path,
+    const std::string& fineSpecies,
+    const std::string& coarseSpecies,
+    const std::string& key,
+    const ConditionInputs& cond,
+    const dem::GravityShearRunResult& result
+)
+{
+    try
+    {
+        const bool exists = std::filesystem::is_regular_file(path);
+        io::AtomicFile out = exists ? io::AtomicFile::update(path) : io::AtomicFile::create(path);
+        const io::Group root = out.root();
+        if (exists)
+        {
+            checkIsStore(root);
+        }
+        else
+        {
+            root.setAttribute("content", contentName);
+            root.setAttribute("fineSpecies", fineSpecies);
+            root.setAttribute("coarseSpecies", coarseSpecies);
+        }
+        const io::Group g = root.createGroup("conditions/" + cond.name);
+        g.setAttribute("phi", cond.phi);
+        g.setAttribute("x", cond.x);
+        g.setAttribute("normalStress", result.settings.walls.normalStress);
+        g.setAttribute("seed", cond.seed);
+        g.setAttribute("particles", std::int64_t(result.settings.cell.particles));
+        g.setAttribute("settingsKey", key);
+        const io::Group s = g.createGroup("segregation");
+        const SegregationRecord record = segregationRecordOf(result);
+        for (const auto& [name, member] : segregationAttributes())
+        {
+            s.setAttribute(name, record.*member);
+        }
+        const io::Group t = g.createGroup("timing");
+        t.setAttribute("wallSeconds", result.wallSeconds);
+        t.setAttribute("cpuSeconds", result.cpuSeconds);
+        out.commit();
+    }
+    catch (const StoreError&)
+    {
+        throw;
+    }
+    catch (const std::exception& err)
+    {
+        throw StoreError(path, "adding condition " + cond.name + " failed: " + err.what());
+    }
+}
+
+
 std::map<std::string, std::string> storedSettingsKeys(const std::string& path)
 {
     std::map<std::string, std::string> stored;
@@ -583,6 +724,13 @@ StoreContents readStore(const std::string& path)
             c.name = name;
             c.phi = g.readDouble("phi");
             c.x = g.readDouble("x");
+            c.particles = g.hasAttribute("particles") ? g.readInt64("particles") : 0;
+            if (g.hasGroup("segregation"))
+            {
+                c.segregation = readSegregation(g.openGroup("segregation"));
+                contents.conditions.push_back(c);
+                continue;
+            }
             if (g.hasAttribute("gammaDot"))
             {
                 c.gammaDot = g.readDouble("gammaDot");

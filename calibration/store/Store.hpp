@@ -37,6 +37,11 @@
 //                            attributes (targetPressure, meanDiameter, solidsDensity, the
 //                            estimates with <name>Error, steady, regime); only steady dense
 //                            flows are stored
+//   /conditions/<name>/segregation
+//                            sheared cells under gravity of a segregation calibration
+//                            (inputs: normalStress and wallSpeed on the condition; no
+//                            species groups, no T): the interior's SegregationRecord as
+//                            attributes; only cells whose top wall carried its load are stored
 //   /conditions/<name>/timing
 //                            wallSeconds cpuSeconds particleStepsPerSecond (the
 //                            only values that differ between identical runs)
@@ -48,6 +53,7 @@
 #define sdf_store_Store_hpp
 
 #include "CellRun.hpp"
+#include "GravityShearRun.hpp"
 
 #include <cstdint>
 #include <map>
@@ -126,6 +132,9 @@ std::string rheologyConditionName
     std::int64_t seed
 );
 
+//- Group name of a sheared cell under gravity, e.g. segregation_sigma368_x0.5_seed1.
+std::string segregationConditionName(double normalStress, double x, std::int64_t seed);
+
 //- Group name of one cell size of a finite-size calibration: name + "_N<particles>",
 //  e.g. phi0.3_x0.4_T0.01_seed1_N300.
 std::string sizedConditionName(const std::string& name, std::int64_t particles);
@@ -143,6 +152,7 @@ struct ConditionInputs
     double targetT = 0;                  // driven cells (gammaDot absent)
     std::optional<double> gammaDot;      // sheared cells [1/s] (targetT unused)
     std::optional<double> inertialNumber;   // rheology cells: the I they are sheared at
+    std::optional<double> normalStress;     // sheared cells under gravity: sigma_N [Pa]
     std::int64_t seed = 0;
 };
 
@@ -156,6 +166,36 @@ void appendCondition
     const std::string& settingsKey,
     const ConditionInputs& inputs,
     const dem::CellRunResult& result
+);
+
+//- What the segregation fit reads back of a sheared cell under gravity
+//  (dem::SegregationMeasurement as stored, with the wall's load and speed).
+struct SegregationRecord
+{
+    double normalStress = 0, wallSpeed = 0;     // [Pa], [m/s]
+    double fineDiameter = 0, sizeRatio = 0, meanDiameter = 0;
+    double solidsFraction = 0, pressureNumber = 0, inertialNumber = 0;
+    double early = 0, earlyError = 0, earlyCoarseShare = 0, earlyShearRate = 0;
+    double balance = 0, balanceError = 0, coarseShare = 0;
+    double shearRate = 0, shearRateError = 0;
+    double diffusivity = 0, diffusivityError = 0;
+    double shearRateDiffusivity = 0, shearRateDiffusivityError = 0;
+    double diffusiveShare = 0, topWallLoad = 0;
+};
+
+//- The record of a run (its settings' load and speed, its measurement)
+SegregationRecord segregationRecordOf(const dem::GravityShearRunResult& result);
+
+//- Appends one finished sheared cell under gravity to the store at path, atomically (as
+//  appendCondition): the group `segregation` with its SegregationRecord, and timing.
+void appendSegregationCondition
+(
+    const std::string& path,
+    const std::string& fineSpecies,
+    const std::string& coarseSpecies,
+    const std::string& settingsKey,
+    const ConditionInputs& inputs,
+    const dem::GravityShearRunResult& result
 );
 
 //- Settings keys of the conditions in the store, by condition name; empty if
@@ -266,6 +306,8 @@ struct ConditionRecord
     std::optional<CollisionRecord> collisions;
     //- Rheology cells only (pressure-controlled); the transport fits and tables skip them
     std::optional<RheologyRecord> rheology;
+    //- Sheared cells under gravity only (no species, no T); the other fits skip them
+    std::optional<SegregationRecord> segregation;
 };
 
 struct StoreContents

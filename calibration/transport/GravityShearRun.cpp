@@ -16,13 +16,18 @@
 namespace sdf::dem
 {
 
+namespace
+{
+
 std::string topWallLoadWarning(double topWallLoad)
 {
     return
-        "warning: the top wall carried " + std::to_string(topWallLoad) + " sigma_N over the"
+        "the top wall carried " + std::to_string(topWallLoad) + " sigma_N over the"
         " sampling, not 1 +- 0.05: the layer was not under its load (a longer"
         " equilibrationTime), and these numbers are not the condition asked for";
 }
+
+} // namespace
 
 
 namespace
@@ -222,6 +227,23 @@ bool SegregationMeasurement::loaded() const
 }
 
 
+std::string SegregationMeasurement::unreachedState() const
+{
+    if (!slidingBeforeDrift())
+    {
+        return
+            "the top wall had slid " + std::to_string(slidingStrainAtDrift) + " strains (U t/gap)"
+            " when the early drift's windows started, not the 1 of its ramp: the drift was read"
+            " in a flow still starting (a later driftStartStrain or a longer developmentTime)";
+    }
+    if (!loaded())
+    {
+        return topWallLoadWarning(topWallLoad);
+    }
+    return "";
+}
+
+
 void validateGravityShearRunSettings(const GravityShearRunSettings& s)
 {
     validateGravityShearSettings(s.walls, 0);
@@ -409,6 +431,7 @@ GravityShearRunResult runGravityShearCell(const GravityShearRunSettings& runSett
     };
     writeSeries(sim);
     sim.run(driftStartStep, writeSeries, seriesEvery, settings.progressEvery, settings.label + " development");
+    const double slidingStrainAtDrift = cell.slidingTime()*cellSettings.wallSpeed/cell.gap();
 
     // the early drift: 5 windows of the rest of the development
     const long driftSteps = driftEndStep - driftStartStep;
@@ -458,6 +481,7 @@ GravityShearRunResult runGravityShearCell(const GravityShearRunSettings& runSett
     );
     std::vector<double> blockGap;
     long samplesTaken = 0;
+    const double slidingStrainAtSampling = cell.slidingTime()*cellSettings.wallSpeed/cell.gap();
     if (cell.wallStressSteps() > 0) writeSeries(sim);   // the development's last stresses
     sampling = true;
     for (int b = 0; b < blocks; ++b)
@@ -603,6 +627,8 @@ GravityShearRunResult runGravityShearCell(const GravityShearRunSettings& runSett
     m.shearRateDiffusivity.samples = m.diffusivity.samples;
     m.diffusiveShare = meanAndStandardError(diffusiveShare).value;
     m.topWallLoad = topWallLoad;
+    m.slidingStrainAtDrift = slidingStrainAtDrift;
+    m.slidingStrainAtSampling = slidingStrainAtSampling;
     m.earlyWindows = earlyS;
     m.balanceBlocks = balanceS;
     m.diffusiveShares = diffusiveShare;
@@ -675,10 +701,12 @@ void writeGravityShearFiles(const GravityShearRunResult& r, const std::string& o
     segregation << "\n# per block, the share of the balance carried by the diffusive term D dc/dy: ";
     for (double v : m.diffusiveShares) segregation << ' ' << v;
     segregation << '\n';
-    segregation << "# the top wall's mean load over the sampling: " << m.topWallLoad << " sigma_N\n";
-    if (!m.loaded())
+    segregation << "# the top wall's mean load over the sampling: " << m.topWallLoad << " sigma_N\n"
+                << "# the top wall's sliding strain since it landed: " << m.slidingStrainAtDrift
+                << " when the early drift started, " << m.slidingStrainAtSampling << " when the sampling started\n";
+    if (!m.unreachedState().empty())
     {
-        segregation << "# " << topWallLoadWarning(m.topWallLoad) << '\n';
+        segregation << "# warning: " << m.unreachedState() << '\n';
     }
     segregation << "# the early drift's interior: w " << m.earlyDrift << " m/s, gammaDot "
                 << m.earlyShearRate << " 1/s, c " << m.earlyCoarseShare << "\n"

@@ -75,11 +75,22 @@ struct SegregationMeasurement
     correlation::Estimate shearRateDiffusivity;  //- C = D/(gammaDot dMean^2)
     double diffusiveShare = 0;       //- the mean share of the balance D dc/dy carries
     double topWallLoad = 0;          //- the top wall's mean load over the sampling / sigma_N
+    //- The top wall's sliding strain U t/gap since it landed, when the early drift's
+    //  windows started and when the sampling started
+    double slidingStrainAtDrift = 0, slidingStrainAtSampling = 0;
     std::vector<double> earlyWindows, balanceBlocks, diffusiveShares;
 
     //- Whether the top wall carried its load (within 5 %): else the cell was not at the
     //  condition asked for
     bool loaded() const;
+
+    //- Whether the top wall had finished its ramp (slid one strain) before the early
+    //  drift's windows: else they were read in a flow still starting
+    bool slidingBeforeDrift() const { return slidingStrainAtDrift >= 1; }
+
+    //- Both: the cell reached the state its estimators read (a calibration stores no
+    //  other); what is missing, or empty
+    std::string unreachedState() const;
 };
 
 //- The profile columns, per layer (block means and block standard errors).
@@ -124,9 +135,6 @@ GravityShearRunResult runGravityShearCell
 //  column; the segregation file's `interior` line is what fitSegregationVelocity reads).
 //  Throws std::runtime_error if a file cannot be written.
 void writeGravityShearFiles(const GravityShearRunResult& result, const std::string& prefix);
-
-//- "warning: the top wall carried ... sigma_N ..." for a cell that was not loaded()
-std::string topWallLoadWarning(double topWallLoad);
 
 //- One line: both estimators, the diffusive share, C and the top wall's load.
 std::string gravityShearSummary(const SegregationMeasurement& s);

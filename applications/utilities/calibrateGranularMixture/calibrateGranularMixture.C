@@ -58,6 +58,7 @@ Description
 #include "conditionScheduler.H"
 #include "fitReport.H"
 #include "rheologyReport.H"
+#include "segregationReport.H"
 #include "numberText.H"
 
 #include "store/ProcessorStores.hpp"
@@ -115,7 +116,18 @@ int main(int argc, char *argv[])
         {
             settings.setRheologyPressure(fromCase->rheologyPressure);
         }
-        if (fromCase->coefficients.empty() && !settings.calibratesRheology())
+        if (!fromCase->segregationNormalStress.empty())
+        {
+            settings.setSegregationNormalStresses
+            (
+                fromCase->segregationNormalStress
+            );
+        }
+        if
+        (
+            fromCase->coefficients.empty() && !settings.calibratesRheology()
+         && !settings.calibratesSegregation()
+        )
         {
             Info<< "Nothing to calibrate: constant/granularProperties switches"
                 << " off both diffusivity and kineticSieving (model none)"
@@ -154,13 +166,28 @@ int main(int argc, char *argv[])
         rheologyConditions(settings)
     );
     conds.insert(conds.end(), rheologyConds.begin(), rheologyConds.end());
+    const std::vector<calibrationCondition> segregationConds
+    (
+        segregationConditions(settings)
+    );
+    conds.insert(conds.end(), segregationConds.begin(), segregationConds.end());
 
     // Check every condition's DEM settings before running anything
     for (const calibrationCondition& c : conds)
     {
         try
         {
-            sdf::dem::validateCellRunSettings(cellSettings(c, settings));
+            if (c.segregation())
+            {
+                sdf::dem::validateGravityShearRunSettings
+                (
+                    settings.segregationCellSettings(c.normalStress, c.seed, c.name)
+                );
+            }
+            else
+            {
+                sdf::dem::validateCellRunSettings(cellSettings(c, settings));
+            }
         }
         catch (const std::exception& err)
         {
@@ -219,6 +246,23 @@ int main(int argc, char *argv[])
             << r.pressure << " Pa, x " << r.x << "; I = gammaDot d/sqrt(p/rho_s)"
             << " with d " << sdf::dem::meanDiameter(cell) << " m, rho_s "
             << sdf::dem::solidsDensity(cell) << " kg/m3" << nl;
+    }
+    if (!segregationConds.empty())
+    {
+        const calibrationSettings::segregationEnvelope& e = settings.segregation();
+        const sdf::dem::CellRunSettings cell =
+            cellSettings(segregationConds.front(), settings);
+        const scalar pStarUnit =
+            sdf::dem::solidsDensity(cell)*e.gravity*sdf::dem::meanDiameter(cell);
+        Info<< "Segregation velocity: " << label(segregationConds.size())
+            << " sheared cells under gravity (sigma_N "
+            << listText(e.normalStress).c_str() << " Pa, p* = sigma_N/(rho_s g"
+            << " dMean) " << listText(scalarList(e.normalStress/pStarUnit)).c_str()
+            << " at the top wall, x " << settings.replicas().size()
+            << " replicas): " << e.particles << " grains, x " << e.x
+            << ", U " << e.wallSpeed << " m/s, " << e.developmentTime
+            << " s of development and " << e.samplingTime << " s of sampling;"
+            << " S by the " << e.estimator.c_str() << " estimator" << nl;
     }
     if (!conds.empty())
     {
@@ -351,6 +395,10 @@ int main(int argc, char *argv[])
     if (!rheologyConds.empty())
     {
         fitRheologyAndReport(runTime, h5, settings, rheologyConds);
+    }
+    if (!segregationConds.empty())
+    {
+        fitSegregationAndReport(runTime, h5, settings, segregationConds);
     }
 
     Info<< "End" << nl << endl;

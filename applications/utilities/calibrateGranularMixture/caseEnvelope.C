@@ -309,6 +309,97 @@ scalar rheologyPressureOfCase
     return median;
 }
 
+//- The loads sigma_N of the segregation cells: segregationPoints values of
+//  p* log-spaced over the cells holding material, from minPressureNumber up
+scalarList segregationLoadsOfCase
+(
+    const std::vector<fileName>& sources,
+    const word& time,
+    const Time& runTime,
+    const calibrationSettings& settings,
+    const scalar phiMin,
+    const dictionary& opts
+)
+{
+    const label points = opts.getOrDefault<label>("segregationPoints", 4);
+    const scalar minPStar = opts.getOrDefault<scalar>("minPressureNumber", 2);
+    if (points < 3 || !(minPStar > 0))
+    {
+        FatalIOErrorInFunction(opts)
+            << "Entries 'fromCase/segregationPoints' " << points << " (at least"
+            << " 3: the pressure law has two parameters) and 'fromCase/minPressureNumber' "
+            << minPStar << " (> 0)" << nl << exit(FatalIOError);
+    }
+    // p* of the segregation law as the case evaluated it, or the bulk's p
+    const bool havePStar = isFile(sources[0]/"pStar");
+    const bool haveP = isFile(sources[0]/"p");
+    if (!havePStar && !haveP)
+    {
+        FatalErrorInFunction
+            << "-fromCase: no field pStar (written by percolation calibrated)"
+            << " or p (written by bulkFlow muI) at time " << time << " of the"
+            << " case: the segregation cells' loads cannot be derived; run the"
+            << " case with percolation calibrated (e.g. on a shipped"
+            << " calibration) or give segregationVelocity/normalStress [Pa] in "
+            << settings.dict().name() << nl << exit(FatalError);
+    }
+    const calibrationSettings::segregationEnvelope& e = settings.segregation();
+    const sdf::dem::CellRunSettings cell =
+        settings.segregationCellSettings(1, 0, "").cell;
+    const scalar pStarUnit =
+        sdf::dem::solidsDensity(cell)*e.gravity*sdf::dem::meanDiameter(cell);
+    const word& fine = settings.fine().name;
+    const word& coarse = settings.coarse().name;
+    scalar lo = GREAT, hi = -GREAT;
+    label material = 0;
+    for (const fileName& dir : sources)
+    {
+        const CellValues v
+        (
+            readCellValues(dir/(havePStar ? "pStar" : "p"), runTime)
+        );
+        const CellValues nFine(readCellValues(dir/("n." + fine), runTime));
+        const CellValues nCoarse(readCellValues(dir/("n." + coarse), runTime));
+        const label cells = cellCount(dir, {&v, &nFine, &nCoarse});
+        for (label celli = 0; celli < cells; ++celli)
+        {
+            if (nFine[celli] + nCoarse[celli] >= phiMin)
+            {
+                const scalar pStar = havePStar ? v[celli] : v[celli]/pStarUnit;
+                lo = min(lo, pStar);
+                hi = max(hi, pStar);
+                ++material;
+            }
+        }
+    }
+    if (material == 0)
+    {
+        FatalErrorInFunction
+            << "-fromCase: no cell holds material (n." << fine << " + n."
+            << coarse << " >= phiMin " << phiMin << ") at time " << time
+            << ": no pressures to calibrate the segregation at; give"
+            << " segregationVelocity/normalStress" << nl << exit(FatalError);
+    }
+    // the cell's interior sits below its top wall: its p* is the load's and
+    // a few more; at the free surface p* -> 0, where the law is clamped
+    const scalar cLo = max(lo, minPStar);
+    const scalar cHi = max(hi, 2*cLo);
+    const scalarList pStars(envelopeValues(cLo, cHi, points, true));
+    scalarList loads(pStars.size());
+    forAll(pStars, i)
+    {
+        loads[i] = pStars[i]*pStarUnit;
+    }
+    Info<< "-fromCase segregation: p* of the " << material << " cells holding"
+        << " material (field " << (havePStar ? "pStar" : "p/(rho_s g dMean)")
+        << ") [" << fmt(lo).c_str() << ", " << fmt(hi).c_str() << "], from"
+        << " minPressureNumber " << fmt(minPStar).c_str() << ": p* "
+        << listText(pStars).c_str() << " -> sigma_N " << listText(loads).c_str()
+        << " Pa (rho_s g dMean " << fmt(pStarUnit).c_str() << " Pa)" << nl;
+    return loads;
+}
+
+
 } // End anonymous namespace
 
 
@@ -358,7 +449,10 @@ Foam::caseEnvelope Foam::deriveEnvelope
     }
     Info<< ")" << nl;
     const bool rheology = settings.calibratesRheology();
-    if (env.coefficients.empty() && !rheology)
+    const bool segregation =
+        settings.calibratesSegregation()
+     && !settings.segregation().normalStressGiven;
+    if (env.coefficients.empty() && !rheology && !segregation)
     {
         return env;
     }
@@ -374,6 +468,11 @@ Foam::caseEnvelope Foam::deriveEnvelope
     if (rheology && !settings.sheared())
     {
         optionKeys.append("minGammaDotRatio");
+    }
+    if (segregation)
+    {
+        optionKeys.append("segregationPoints");
+        optionKeys.append("minPressureNumber");
     }
     modelCoeffs::checkKeys(opts, optionKeys);
     const label points = opts.getOrDefault<label>("points", 3);
@@ -486,6 +585,13 @@ Foam::caseEnvelope Foam::deriveEnvelope
         env.rheologyPressure = rheologyPressureOfCase
         (
             sources, time, runTime, settings, phiMin, shearRatio
+        );
+    }
+    if (segregation)
+    {
+        env.segregationNormalStress = segregationLoadsOfCase
+        (
+            sources, time, runTime, settings, phiMin, opts
         );
     }
     if (env.coefficients.empty())

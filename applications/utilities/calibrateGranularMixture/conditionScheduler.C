@@ -35,6 +35,8 @@ struct FinishedCondition
 {
     label index = -1;                    // in the list of all conditions
     sdf::dem::CellRunResult result;
+    //- a sheared cell under gravity's
+    sdf::dem::GravityShearRunResult segregation;
     std::string error;                   // the engine's message if it stopped
     double seconds = 0;
 };
@@ -48,6 +50,12 @@ std::string Foam::calibrationCondition::text() const
     {
         return
             "rheology I " + fmt(inertialNumber) + " p " + fmt(pressure)
+          + " seed " + std::to_string(seed);
+    }
+    if (segregation())
+    {
+        return
+            "segregation sigma_N " + fmt(normalStress) + " x " + fmt(x)
           + " seed " + std::to_string(seed);
     }
     return
@@ -68,6 +76,10 @@ sdf::store::ConditionInputs Foam::calibrationCondition::inputs() const
     if (rheology())
     {
         in.inertialNumber = inertialNumber;
+    }
+    if (segregation())
+    {
+        in.normalStress = normalStress;
     }
     if (sheared())
     {
@@ -163,12 +175,49 @@ std::vector<Foam::calibrationCondition> Foam::rheologyConditions
 }
 
 
+std::vector<Foam::calibrationCondition> Foam::segregationConditions
+(
+    const calibrationSettings& settings
+)
+{
+    std::vector<calibrationCondition> conds;
+    if (!settings.calibratesSegregation())
+    {
+        return conds;
+    }
+    const calibrationSettings::segregationEnvelope& e = settings.segregation();
+    for (const scalar sigma : e.normalStress)
+    {
+        for (const label seed : settings.replicas())
+        {
+            calibrationCondition c;
+            c.phi = e.phi;
+            c.x = e.x;
+            c.T = 0;
+            c.gammaDot = 0;
+            c.seed = seed;
+            c.particles = 0;
+            c.normalStress = sigma;
+            c.pointName =
+                sdf::store::segregationConditionName(sigma, e.x, seed);
+            c.name = c.pointName;
+            conds.push_back(c);
+        }
+    }
+    return conds;
+}
+
+
 sdf::dem::CellRunSettings Foam::cellSettings
 (
     const calibrationCondition& c,
     const calibrationSettings& settings
 )
 {
+    if (c.segregation())
+    {
+        return settings.segregationCellSettings(c.normalStress, c.seed, c.name).cell;
+    }
     if (c.rheology())
     {
         return settings.rheologyCellSettings(c.inertialNumber, c.seed, c.name);
@@ -186,6 +235,10 @@ std::string Foam::settingsKeyOf
     const calibrationSettings& settings
 )
 {
+    if (c.segregation())
+    {
+        return settings.segregationSettingsKey();
+    }
     return
         c.rheology()
       ? settings.rheologySettingsKey()
@@ -334,7 +387,20 @@ Foam::label Foam::runConditions
             try
             {
                 const calibrationCondition& c = conds[f.index];
-                f.result = sdf::dem::runCell(cellSettings(c, settings));
+                if (c.segregation())
+                {
+                    f.segregation = sdf::dem::runGravityShearCell
+                    (
+                        settings.segregationCellSettings
+                        (
+                            c.normalStress, c.seed, c.name
+                        )
+                    );
+                }
+                else
+                {
+                    f.result = sdf::dem::runCell(cellSettings(c, settings));
+                }
             }
             catch (const std::exception& err)
             {
@@ -396,10 +462,30 @@ Foam::label Foam::runConditions
             "condition " + std::to_string(f.index + 1) + "/"
           + std::to_string(conds.size())
           + " (" + c.text() + ")";
+        const bool segregationLeftOut =
+            c.segregation()
+         && (
+                !f.error.empty()
+             || !f.segregation.segregation.unreachedState().empty()
+            );
         const bool leftOut =
             c.rheology()
          && (!f.error.empty() || !f.result.rheology.denseSteadyFlow());
-        if (leftOut)
+        if (segregationLeftOut)
+        {
+            // not at its condition, or not run: reported, never stored
+            progress << where.c_str() << " done in " << fmt(f.seconds).c_str()
+                << " s: left out of the segregation fit, not stored ("
+                << (
+                       f.error.empty()
+                     ? f.segregation.segregation.unreachedState()
+                     : "refused by the DEM engine: " + f.error
+                   ).c_str()
+                << ")" << endl;
+            doneCost += cost[f.index];
+            doneSeconds += f.seconds;
+        }
+        else if (leftOut)
         {
             // not a steady dense flow: reported, never stored as one
             const sdf::dem::RheologyResult& h = f.result.rheology;
@@ -428,10 +514,14 @@ Foam::label Foam::runConditions
         {
             try
             {
-                settings.appendToStore
-                (
-                    store, c.inputs(), f.result
-                );
+                if (c.segregation())
+                {
+                    settings.appendToStore(store, c.inputs(), f.segregation);
+                }
+                else
+                {
+                    settings.appendToStore(store, c.inputs(), f.result);
+                }
                 ++ran;
                 doneCost += cost[f.index];
                 doneSeconds += f.seconds;
@@ -471,8 +561,17 @@ Foam::label Foam::runConditions
                 const sdf::dem::RheologyResult& h = r.rheology;
                 // what the cell measured: a rheology cell's I, mu, phi and
                 // sigma_yy; a transport cell's T and D of the fines
+                const sdf::dem::SegregationMeasurement& m =
+                    f.segregation.segregation;
                 const std::string measured =
-                    c.rheology()
+                    c.segregation()
+                  ? "p* = " + fmt(m.pressureNumber) + ", I = "
+                  + fmt(m.inertialNumber) + ", S = "
+                  + fmt(m.balance.value) + " +- " + fmt(m.balance.standardError)
+                  + " m (balance), " + fmt(m.early.value) + " +- "
+                  + fmt(m.early.standardError) + " m (early), C = "
+                  + fmt(m.shearRateDiffusivity.value)
+                  : c.rheology()
                   ? "I = " + fmt(h.inertialNumber.value) + ", mu = "
                   + fmt(h.stressRatio.value) + " +- "
                   + fmt(h.stressRatio.standardError) + ", phi = "
@@ -492,7 +591,7 @@ Foam::label Foam::runConditions
                     << measured.c_str() << ")" << endl;
                 if
                 (
-                    !c.rheology()
+                    !c.rheology() && !c.segregation()
                  && !r.species[0].diffusiveRegime.converged()
                 )
                 {

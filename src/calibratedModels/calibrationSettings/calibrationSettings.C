@@ -19,7 +19,7 @@
 
 const Foam::wordList Foam::calibrationSettings::validCoefficients
 ({
-    "D", "eta", "breakage", "rheology"
+    "D", "eta", "breakage", "rheology", "segregationVelocity"
 });
 
 const Foam::wordList Foam::calibrationSettings::validDLaws
@@ -54,7 +54,8 @@ const Foam::wordList validEntries
     "etaDiameterPower", "fitMaxIterations",
     "particles", "mode", "plot", "concurrentConditions", "fromCase",
     "equilibrationStrain", "maxEquilibrationStrain", "samplingStrain",
-    "finiteSize", "sievingAttribution", "diffusivityEstimate", "rheology"
+    "finiteSize", "sievingAttribution", "diffusivityEstimate", "rheology",
+    "segregationVelocity"
 });
 
 
@@ -287,7 +288,10 @@ Foam::calibrationSettings::calibrationSettings
                 << " (D: diffusivity of the fines, eta: kinetic sieving"
                 << " coefficient of the coarse, breakage: collision frequency"
                 << " and mean impact energy of both species, rheology: mu(I)"
-                << " and phi(I) of the bulk, the entry 'rheology')" << nl
+                << " and phi(I) of the bulk, the entry 'rheology';"
+                << " segregationVelocity: the percolation length S of the"
+                << " coarse in sheared cells under gravity, the entry"
+                << " 'segregationVelocity')" << nl
                 << exit(FatalIOError);
         }
     }
@@ -301,6 +305,18 @@ Foam::calibrationSettings::calibrationSettings
             << "Entry 'rheology' given, but 'coefficients' " << coefficients_
             << " does not hold rheology: add it to calibrate mu(I) and"
             << " phi(I), or remove the entry" << nl << exit(FatalIOError);
+    }
+    if (calibratesSegregation())
+    {
+        readSegregation(dict, rheologyPressureFromCase);
+    }
+    else if (dict.found("segregationVelocity"))
+    {
+        FatalIOErrorInFunction(dict)
+            << "Entry 'segregationVelocity' given, but 'coefficients' "
+            << coefficients_ << " does not hold segregationVelocity: add it to"
+            << " calibrate the segregation velocity, or remove the entry" << nl
+            << exit(FatalIOError);
     }
     laws_ = readLawList(dict, "laws", validDLaws, "D");
     etaLaws_ = readLawList(dict, "etaLaws", validEtaLaws, "eta");
@@ -389,7 +405,8 @@ Foam::calibrationSettings::calibrationSettings
     checkRateAxis(dict);
     readStrains(dict);
     const bool rheologyOnly =
-        calibratesRheology() && transportCoefficients().empty();
+        (calibratesRheology() || calibratesSegregation())
+     && transportCoefficients().empty();
     transportRunControls_ = !(rheologyOnly && !dict.found("samplingTime"));
     if (samplingStrain_ > 0 || !transportRunControls_)
     {
@@ -557,6 +574,203 @@ void Foam::calibrationSettings::readRheology
 }
 
 
+void Foam::calibrationSettings::readSegregation
+(
+    const dictionary& dict,
+    const bool normalStressOptional
+)
+{
+    if (!dict.isDict("segregationVelocity"))
+    {
+        FatalIOErrorInFunction(dict)
+            << "'coefficients' holds segregationVelocity but the sub-dictionary"
+            << " 'segregationVelocity' is missing; give at least" << nl
+            << "    segregationVelocity { normalStress (100 400 1600); }" << nl
+            << "    (the top wall's loads sigma_N [Pa] of the sheared cells under"
+            << " gravity; -fromCase derives them from the case)" << nl
+            << exit(FatalIOError);
+    }
+    const dictionary& sd = dict.subDict("segregationVelocity");
+    modelCoeffs::checkKeys
+    (
+        sd,
+        wordList
+        ({
+            "normalStress", "x", "phi", "wallSpeed", "gravity",
+            "profileRelaxationTime", "particles", "developmentTime",
+            "samplingTime", "blocks", "heightRatio", "wallThickness", "layers",
+            "driftStartStrain", "driftEndStrain", "diffusionStrain",
+            "sampleEvery", "estimator"
+        })
+    );
+    segregationEnvelope& e = segregation_;
+    e.normalStressGiven = sd.found("normalStress");
+    if (!e.normalStressGiven && !normalStressOptional)
+    {
+        FatalIOErrorInFunction(sd)
+            << "Missing entry 'normalStress' [Pa]: the top wall's loads sigma_N"
+            << " of the sheared cells under gravity (the pressures of the case,"
+            << " p* = p/(rho_s g dMean) from a few to a few hundred; -fromCase"
+            << " derives them from the case's bulk flow)" << nl
+            << exit(FatalIOError);
+    }
+    if (e.normalStressGiven)
+    {
+        e.normalStress = readEnvelopeList
+        (
+            sd, "normalStress", 0, GREAT,
+            "the top wall's loads sigma_N [Pa], each > 0"
+        );
+    }
+    const auto inOpen = [&sd](const word& key, const scalar value, const scalar lo,
+        const scalar hi, const char* meaning)
+    {
+        const scalar v = sd.getOrDefault<scalar>(key, value);
+        if (!(v > lo && v < hi) || !std::isfinite(v))
+        {
+            FatalIOErrorInFunction(sd)
+                << "Entry '" << key << " " << v << "' (" << meaning
+                << ") must lie in (" << lo << ", "
+                << (hi > 1e300 ? std::string("inf") : fmt(hi)).c_str() << ")"
+                << nl << exit(FatalIOError);
+        }
+        return v;
+    };
+    e.x = inOpen("x", e.x, 0, 1, "coarse fraction of the cells' solids");
+    e.phi = inOpen("phi", e.phi, 0.05, phiJamming, "the packing the cells are cut from");
+    e.wallSpeed = inOpen("wallSpeed", e.wallSpeed, 0, GREAT, "the top wall's speed U [m/s]");
+    e.gravity = inOpen("gravity", e.gravity, 0, GREAT, "g [m/s^2], normal to the walls");
+    e.profileRelaxationTime = inOpen
+    (
+        "profileRelaxationTime", e.profileRelaxationTime, -SMALL, GREAT,
+        "tau_u of the force holding the linear profile [s]; 0: off"
+    );
+    e.developmentTime = inOpen
+    (
+        "developmentTime", e.developmentTime, 0, GREAT,
+        "the development from the mixed start before the sampling [s]"
+    );
+    e.samplingTime = inOpen("samplingTime", e.samplingTime, 0, GREAT, "the sampling [s]");
+    e.heightRatio = inOpen("heightRatio", e.heightRatio, 0, GREAT, "the packing's height over its width");
+    e.wallThickness = inOpen("wallThickness", e.wallThickness, 0, GREAT, "each wall's thickness [coarse diameters]");
+    e.driftStartStrain = inOpen("driftStartStrain", e.driftStartStrain, -SMALL, GREAT, "strain U t/gap");
+    e.driftEndStrain = inOpen("driftEndStrain", e.driftEndStrain, -SMALL, GREAT, "strain U t/gap; 0: the development's end");
+    e.diffusionStrain = inOpen("diffusionStrain", e.diffusionStrain, 0, GREAT, "strain U t/gap");
+    e.particles = sd.getOrDefault<label>("particles", e.particles);
+    e.blocks = sd.getOrDefault<label>("blocks", e.blocks);
+    e.layers = sd.getOrDefault<label>("layers", e.layers);
+    e.sampleEvery = sd.getOrDefault<label>("sampleEvery", e.sampleEvery);
+    if
+    (
+        e.particles < 100 || e.blocks < 2 || e.layers < 2 || e.layers > 1000
+     || e.sampleEvery < 1
+    )
+    {
+        FatalIOErrorInFunction(sd)
+            << "Entries 'particles " << e.particles << "' (at least 100), 'blocks "
+            << e.blocks << "' (at least 2), 'layers " << e.layers
+            << "' (2 to 1000), 'sampleEvery " << e.sampleEvery << "' (at least 1)"
+            << nl << exit(FatalIOError);
+    }
+    e.estimator = sd.getOrDefault<word>("estimator", e.estimator);
+    if (e.estimator != "balance" && e.estimator != "early")
+    {
+        FatalIOErrorInFunction(sd)
+            << "Entry 'estimator " << e.estimator << "': valid: balance (the"
+            << " sampled profile's flux balance, the diffusive back-flux"
+            << " included), early (the drift of the mixed start)" << nl
+            << exit(FatalIOError);
+    }
+}
+
+
+void Foam::calibrationSettings::setSegregationNormalStresses
+(
+    const scalarList& normalStress
+)
+{
+    for (label i = 0; i < normalStress.size(); ++i)
+    {
+        if
+        (
+            !(normalStress[i] > 0) || !std::isfinite(normalStress[i])
+         || (i > 0 && !(normalStress[i] > normalStress[i - 1]))
+        )
+        {
+            FatalErrorInFunction
+                << "The segregation cells' loads from the case, " << normalStress
+                << " Pa, are not increasing pressures > 0: give 'normalStress'"
+                << " in the segregationVelocity entry of " << dict_.name() << nl
+                << exit(FatalError);
+        }
+    }
+    if (normalStress.empty())
+    {
+        FatalErrorInFunction
+            << "No segregation cells' loads from the case: give 'normalStress'"
+            << " in the segregationVelocity entry of " << dict_.name() << nl
+            << exit(FatalError);
+    }
+    segregation_.normalStress = normalStress;
+}
+
+
+sdf::dem::GravityShearRunSettings
+Foam::calibrationSettings::segregationCellSettings
+(
+    const scalar normalStress,
+    const label seed,
+    const std::string& name
+) const
+{
+    const segregationEnvelope& e = segregation_;
+    sdf::dem::GravityShearRunSettings s;
+    s.cell = base_;
+    s.cell.volumeFractions = {1 - e.x, e.x};
+    s.cell.solidsFraction = e.phi;
+    s.cell.particles = e.particles;
+    s.cell.equilibrationTime = e.developmentTime;
+    s.cell.maxEquilibrationTime = 0;
+    s.cell.samplingTime = e.samplingTime;
+    s.cell.blocks = e.blocks;
+    s.cell.sampleEvery = e.sampleEvery;
+    s.cell.simulation.mode = sdf::dem::CellMode::nve;
+    s.cell.simulation.targetPressure = 0;
+    s.cell.seed = seed;
+    s.cell.label = name;
+    s.walls.gravity = e.gravity;
+    s.walls.wallSpeed = e.wallSpeed;
+    s.walls.normalStress = normalStress;
+    s.walls.profileRelaxationTime = e.profileRelaxationTime;
+    s.heightRatio = e.heightRatio;
+    s.wallThickness = e.wallThickness;
+    s.layers = e.layers;
+    s.driftStartStrain = e.driftStartStrain;
+    s.driftEndStrain = e.driftEndStrain;
+    s.diffusionStrain = e.diffusionStrain;
+    return s;
+}
+
+
+std::string Foam::calibrationSettings::segregationSettingsKey() const
+{
+    const segregationEnvelope& e = segregation_;
+    // sigma_N and x are in the condition's name
+    const sdf::dem::GravityShearRunSettings s =
+        segregationCellSettings(1, 0, "");
+    return
+        sdf::store::settingsKey(s.cell, contactModel_)
+      + "; gravityShear g " + fmt(e.gravity) + " U " + fmt(e.wallSpeed)
+      + " profileRelaxationTime " + fmt(e.profileRelaxationTime)
+      + " heightRatio " + fmt(e.heightRatio)
+      + " wallThickness " + fmt(e.wallThickness)
+      + " layers " + std::to_string(e.layers)
+      + " driftStartStrain " + fmt(e.driftStartStrain)
+      + " driftEndStrain " + fmt(e.driftEndStrain)
+      + " diffusionStrain " + fmt(e.diffusionStrain);
+}
+
+
 void Foam::calibrationSettings::readStrains(const dictionary& dict)
 {
     const wordList strainKeys
@@ -721,7 +935,7 @@ Foam::wordList Foam::calibrationSettings::transportCoefficients() const
     wordList transport;
     for (const word& c : coefficients_)
     {
-        if (c != "rheology")
+        if (c != "rheology" && c != "segregationVelocity")
         {
             transport.append(c);
         }
@@ -826,6 +1040,20 @@ void Foam::calibrationSettings::appendToStore
       ? rheologySettingsKey()
       : settingsKey(result.settings.particles),
         inputs, result
+    );
+}
+
+
+void Foam::calibrationSettings::appendToStore
+(
+    const std::string& path,
+    const sdf::store::ConditionInputs& inputs,
+    const sdf::dem::GravityShearRunResult& result
+) const
+{
+    sdf::store::appendSegregationCondition
+    (
+        path, fine_.name, coarse_.name, segregationSettingsKey(), inputs, result
     );
 }
 

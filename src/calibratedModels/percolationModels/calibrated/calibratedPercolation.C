@@ -138,6 +138,19 @@ Foam::percolationModels::calibrated::calibrated
         outsidePolicyNames.getOrDefault("outsideEnvelope", coeffs_, outsidePolicy::clamp)
     ),
     gSf_(gravityFaceAreas(mixture)),
+    pStar_
+    (
+        IOobject
+        (
+            "pStar",
+            mixture.mesh().time().timeName(),
+            mixture.mesh(),
+            IOobject::NO_READ,
+            IOobject::AUTO_WRITE
+        ),
+        mixture.mesh(),
+        dimensionedScalar(dimless, Zero)
+    ),
     gammaDotf_(scratchSurfaceField(mixture.mesh(), "calibratedPercolation:gammaDotf", dimless/dimTime)),
     pStarf_(scratchSurfaceField(mixture.mesh(), "calibratedPercolation:pStarf", dimless)),
     xf_(scratchSurfaceField(mixture.mesh(), "calibratedPercolation:xf", dimless))
@@ -249,15 +262,14 @@ void Foam::percolationModels::calibrated::checkEnvelope
 
 void Foam::percolationModels::calibrated::correct()
 {
-    const volScalarField pStar
-    (
+    pStar_ =
         bulkFlow_.pressure()
        /(
             mixture_.solidsDensity()
            *dimensionedScalar("g", dimAcceleration, mag(mixture_.gravity()))
            *mixture_.dMean()
-        )
-    );
+        );
+    const volScalarField& pStar = pStar_;
     const volScalarField x(mixture_.coarseFraction());
     if (outside_ == outsidePolicy::error)
     {
