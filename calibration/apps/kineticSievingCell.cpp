@@ -233,14 +233,13 @@ int main(int argc, char** argv)
         sim.setDriving(std::move(forcing));
 
         const double dt = sim.timeStep();
-        const long sampleEvery = std::max(1, settings.sampleEvery);
-        const long equilibrationSteps = std::lround(settings.equilibrationTime/dt);
-        const long blockSteps =
-            std::max(sampleEvery, std::lround(settings.samplingTime/settings.blocks/dt)/sampleEvery*sampleEvery);
         // about 2000 lines, on the samples' grid
-        const long seriesSamples =
-            std::max(1L, (equilibrationSteps + settings.blocks*blockSteps)/2000/sampleEvery);
-        const long seriesEvery = seriesSamples*sampleEvery;
+        const SampledSchedule schedule = sampledSchedule(settings, dt, 2000);
+        const long sampleEvery = schedule.sampleEvery;
+        const long equilibrationSteps = schedule.equilibrationSteps;
+        const long blockSteps = schedule.blockSteps;
+        const long seriesSamples = schedule.seriesSamples;
+        const long seriesEvery = schedule.seriesEvery;
         std::cout << "Kolmogorov cell: " << sim.particles().size() << " particles, box "
                   << sim.box().lx << " m, dt " << dt << " s, a0 " << amplitude
                   << " m/s^2, k " << k << " 1/m; " << equilibrationSteps << " steps to the steady state, "

@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <sstream>
 #include <stdexcept>
 
@@ -484,14 +485,19 @@ std::string settingsKey(const dem::CellRunSettings& b, const std::string& contac
 }
 
 
-void appendCondition
+namespace
+{
+
+//- Adds the group conditions/<name> to the store at path (created with the root
+//  attributes if there is none), write(group) filling it, atomically; any failure a
+//  StoreError naming the file and the condition.
+void appendConditionGroup
 (
     const std::string& path,
     const std::string& fineSpecies,
     const std::string& coarseSpecies,
-    const std::string& key,
-    const ConditionInputs& cond,
-    const dem::CellRunResult& r
+    const std::string& name,
+    const std::function<void(const io::Group&)>& write
 )
 {
     try
@@ -509,7 +515,34 @@ void appendCondition
             root.setAttribute("fineSpecies", fineSpecies);
             root.setAttribute("coarseSpecies", coarseSpecies);
         }
-        const io::Group g = root.createGroup("conditions/" + cond.name);
+        write(root.createGroup("conditions/" + name));
+        out.commit();
+    }
+    catch (const StoreError&)
+    {
+        throw;
+    }
+    catch (const std::exception& err)
+    {
+        throw StoreError(path, "adding condition " + name + " failed: " + err.what());
+    }
+}
+
+} // namespace
+
+
+void appendCondition
+(
+    const std::string& path,
+    const std::string& fineSpecies,
+    const std::string& coarseSpecies,
+    const std::string& key,
+    const ConditionInputs& cond,
+    const dem::CellRunResult& r
+)
+{
+    appendConditionGroup(path, fineSpecies, coarseSpecies, cond.name, [&](const io::Group& g)
+    {
         // inputs
         g.setAttribute("phi", cond.phi);
         g.setAttribute("x", cond.x);
@@ -575,16 +608,7 @@ void appendCondition
         t.setAttribute("wallSeconds", r.wallSeconds);
         t.setAttribute("cpuSeconds", r.cpuSeconds);
         t.setAttribute("particleStepsPerSecond", r.particleStepsPerSecond);
-        out.commit();
-    }
-    catch (const StoreError&)
-    {
-        throw;
-    }
-    catch (const std::exception& err)
-    {
-        throw StoreError(path, "adding condition " + cond.name + " failed: " + err.what());
-    }
+    });
 }
 
 
@@ -629,22 +653,8 @@ void appendSegregationCondition
     const dem::GravityShearRunResult& result
 )
 {
-    try
+    appendConditionGroup(path, fineSpecies, coarseSpecies, cond.name, [&](const io::Group& g)
     {
-        const bool exists = std::filesystem::is_regular_file(path);
-        io::AtomicFile out = exists ? io::AtomicFile::update(path) : io::AtomicFile::create(path);
-        const io::Group root = out.root();
-        if (exists)
-        {
-            checkIsStore(root);
-        }
-        else
-        {
-            root.setAttribute("content", contentName);
-            root.setAttribute("fineSpecies", fineSpecies);
-            root.setAttribute("coarseSpecies", coarseSpecies);
-        }
-        const io::Group g = root.createGroup("conditions/" + cond.name);
         g.setAttribute("phi", cond.phi);
         g.setAttribute("x", cond.x);
         g.setAttribute("normalStress", result.settings.walls.normalStress);
@@ -660,16 +670,7 @@ void appendSegregationCondition
         const io::Group t = g.createGroup("timing");
         t.setAttribute("wallSeconds", result.wallSeconds);
         t.setAttribute("cpuSeconds", result.cpuSeconds);
-        out.commit();
-    }
-    catch (const StoreError&)
-    {
-        throw;
-    }
-    catch (const std::exception& err)
-    {
-        throw StoreError(path, "adding condition " + cond.name + " failed: " + err.what());
-    }
+    });
 }
 
 

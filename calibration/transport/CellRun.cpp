@@ -547,4 +547,19 @@ CellRunResult runCell(const CellRunSettings& settings)
     return result;
 }
 
+SampledSchedule sampledSchedule(const CellRunSettings& settings, double dt, long rows)
+{
+    SampledSchedule s;
+    s.sampleEvery = std::max(1, settings.sampleEvery);
+    s.equilibrationSteps = std::lround(settings.equilibrationTime/dt);
+    s.blockSteps = std::max
+    (
+        s.sampleEvery, std::lround(settings.samplingTime/settings.blocks/dt)/s.sampleEvery*s.sampleEvery
+    );
+    s.seriesSamples = std::max(1L, (s.equilibrationSteps + settings.blocks*s.blockSteps)/rows/s.sampleEvery);
+    s.seriesEvery = s.seriesSamples*s.sampleEvery;
+    return s;
+}
+
+
 } // namespace sdf::dem

@@ -110,6 +110,16 @@ CellRunSettings atInertialNumber
 //  (apps/kineticSievingCell.cpp) start from it too.
 Packing initialCell(const CellRunSettings& settings, double T0);
 
+//- A wall-bounded or forced cell's schedule in steps of dt: samples every sampleEvery
+//  (at least 1) steps, the development (equilibrationTime) and blocks of whole samples
+//  (samplingTime/blocks, at least one sample); seriesEvery: a series row every that many
+//  steps, on the samples' grid, about `rows` rows over the run
+struct SampledSchedule
+{
+    long sampleEvery = 1, equilibrationSteps = 0, blockSteps = 1, seriesSamples = 1, seriesEvery = 1;
+};
+SampledSchedule sampledSchedule(const CellRunSettings& settings, double dt, long rows);
+
 struct SpeciesTransport
 {
     std::string name;

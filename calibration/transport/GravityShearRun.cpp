@@ -338,13 +338,13 @@ GravityShearRunResult runGravityShearCell(const GravityShearRunSettings& runSett
     sim.setDriving(std::move(driving));
 
     const double dt = sim.timeStep();
-    const long sampleEvery = std::max(1, settings.sampleEvery);
-    const long equilibrationSteps = std::lround(settings.equilibrationTime/dt);
-    const long blockSteps =
-        std::max(sampleEvery, std::lround(settings.samplingTime/settings.blocks/dt)/sampleEvery*sampleEvery);
-    const long seriesSamples =
-        std::max(1L, (equilibrationSteps + settings.blocks*blockSteps)/1000/sampleEvery);
-    const long seriesEvery = seriesSamples*sampleEvery;
+    // about 1000 series rows
+    const SampledSchedule schedule = sampledSchedule(settings, dt, 1000);
+    const long sampleEvery = schedule.sampleEvery;
+    const long equilibrationSteps = schedule.equilibrationSteps;
+    const long blockSteps = schedule.blockSteps;
+    const long seriesSamples = schedule.seriesSamples;
+    const long seriesEvery = schedule.seriesEvery;
     const double rhoS = settings.species.back().density;
     const double dMean = meanDiameter(settings);
     const double nominalShearRate = cellSettings.wallSpeed/cell.gap();
