@@ -213,3 +213,31 @@ test_calibration_segregation_refusals()
     [ ! -e "$dir/constant/segregationVelocity" ] || { echo "segregationVelocity written without cells"; return 1; }
     echo "unsheared cells: 3 left out, none stored, no segregationVelocity"
 }
+
+# Two sheared cells under gravity over 2 MPI ranks (-parallel, -noFit): one
+# cell per rank, both stores merged, and the merged store's cells (timings
+# aside) identical to a serial run's, one cell at a time there
+test_calibration_segregation_parallel()
+{
+    local ref="$workRoot/calibrationSegregationSerial" dir="$workRoot/calibrationSegregationParallel" d
+    for d in "$ref" "$dir"
+    do
+        segregation_case "$d" "normalStress (100 400);"
+        foamDictionary -entry concurrentConditions -set 1 "$d/system/calibrationDict" > /dev/null
+    done
+    calibrateGranularMixture -case "$ref" -noFit > "$ref/log" 2>&1 || { tail -20 "$ref/log"; return 1; }
+    mpirun --allow-run-as-root --oversubscribe -np 2 calibrateGranularMixture -parallel -case "$dir" -noFit > "$dir/log" 2>&1 \
+        || { tail -20 "$dir/log"; return 1; }
+    local r0 r1
+    r0=$(grep -c "^\[0\] condition .* done in" "$dir/log")
+    r1=$(grep -c "^\[1\] condition .* done in" "$dir/log")
+    echo "rank 0 ran $r0, rank 1 ran $r1 segregation cells"
+    [ "$r0" -eq 1 ] && [ "$r1" -eq 1 ] || { echo "cells not spread 1 + 1 over the ranks"; return 1; }
+    grep -q "Merged 2 conditions of 2 processor stores" "$dir/log" || { grep -i merged "$dir/log"; echo "no merge of 2 conditions"; return 1; }
+    dump_conditions "$ref/constant/calibration.h5" > "$ref/conditions.txt"
+    dump_conditions "$dir/constant/calibration.h5" > "$dir/conditions.txt"
+    [ "$(grep -c 'GROUP "segregation"' "$ref/conditions.txt")" -eq 2 ] || { echo "the serial store lacks its 2 segregation groups"; return 1; }
+    diff -q "$ref/conditions.txt" "$dir/conditions.txt" > /dev/null \
+        || { echo "cells differ from the serial run:"; diff "$ref/conditions.txt" "$dir/conditions.txt" | head -20; return 1; }
+    echo "2 cells on 2 ranks: the store ($(wc -l < "$dir/conditions.txt") dump lines) identical to the serial run's"
+}
