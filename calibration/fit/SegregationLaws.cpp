@@ -275,7 +275,7 @@ std::string segregationVelocityEntries(const SegregationFit& fit)
     };
     out << "segregationVelocity\n{\n"
         << "    // w_coarse = S gammaDot (1 - c); S [m] fitted on " << best.points
-        << " sheared cells under gravity (apps/gravityShearCell)\n"
+        << " sheared cells under gravity (transport/GravityShearRun)\n"
         << "    law             " << best.law.name() << ";\n"
         << "    formula         \"" << best.law.formula() << "\";\n";
     for (const FittedParameter& p : best.parameters)

@@ -39,9 +39,10 @@
 //                            flows are stored
 //   /conditions/<name>/segregation
 //                            sheared cells under gravity of a segregation calibration
-//                            (inputs: normalStress and wallSpeed on the condition; no
-//                            species groups, no T): the interior's SegregationRecord as
-//                            attributes; only cells whose top wall carried its load are stored
+//                            (inputs: normalStress on the condition; no species groups,
+//                            no T): the interior's SegregationRecord as attributes, the
+//                            wall's load and speed among them; only cells at their
+//                            condition (SegregationMeasurement::unreachedState) are stored
 //   /conditions/<name>/timing
 //                            wallSeconds cpuSeconds particleStepsPerSecond (the
 //                            only values that differ between identical runs)

@@ -295,6 +295,30 @@ void validateGravityShearRunSettings(const GravityShearRunSettings& s)
             " (more particles, a larger heightRatio or thinner walls)"
         );
     }
+    // the run checks both again on the cut cell's gap; here on the packing's, so that
+    // a calibration refuses them before any cell runs
+    const int first = std::max(1, int(std::ceil(2*dCoarse/(gap/s.layers))));
+    if (s.layers - 1 - 2*first < 1)
+    {
+        throw std::invalid_argument
+        (
+            "entry 'layers': " + std::to_string(s.layers) + " layers leave fewer than two layers"
+            " two coarse diameters from the walls; more layers or a deeper cell"
+        );
+    }
+    const double rate = s.walls.wallSpeed/gap;
+    const double driftStart = s.driftStartStrain/rate;
+    const double driftEnd = s.driftEndStrain > 0 ? s.driftEndStrain/rate : s.cell.equilibrationTime;
+    if (!(driftStart < driftEnd) || driftEnd > s.cell.equilibrationTime)
+    {
+        throw std::invalid_argument
+        (
+            "entries 'driftStartStrain', 'driftEndStrain', 'equilibrationTime': the early drift would"
+            " be read from " + std::to_string(driftStart) + " s to " + std::to_string(driftEnd)
+          + " s (U/gap about " + std::to_string(rate) + " 1/s), which must be an interval within the"
+            " development (" + std::to_string(s.cell.equilibrationTime) + " s)"
+        );
+    }
 }
 
 

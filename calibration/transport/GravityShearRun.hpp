@@ -50,7 +50,9 @@ struct GravityShearRunSettings
 
 //- Throws std::invalid_argument naming the entry, before the packing (which takes
 //  seconds): the walls' settings, two species with the coarse last, layers in [2, 1000],
-//  the walls at least 10 coarse diameters apart, wallSpeed > 0, the strains.
+//  the walls at least 10 coarse diameters apart, wallSpeed > 0, the strains, two
+//  interior layers and the early drift's window within the development (on the
+//  packing's gap: the run checks them again on the cut cell's).
 void validateGravityShearRunSettings(const GravityShearRunSettings& settings);
 
 //- The percolation length of the interior and the conditions it was read at.

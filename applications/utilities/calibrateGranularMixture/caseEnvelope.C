@@ -721,6 +721,12 @@ Foam::caseEnvelope Foam::deriveEnvelope
                      ? " (its rheology is kept: the rheology entry's cells)"
                      : ""
                    )
+                << (
+                       key == "coefficients" && settings.calibratesSegregation()
+                     ? " (its segregationVelocity is kept: the"
+                       " segregationVelocity entry's cells)"
+                     : ""
+                   )
                 << nl;
         }
     }

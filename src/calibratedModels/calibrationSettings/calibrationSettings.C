@@ -621,6 +621,14 @@ void Foam::calibrationSettings::readSegregation
             sd, "normalStress", 0, GREAT,
             "the top wall's loads sigma_N [Pa], each > 0"
         );
+        if (e.normalStress.size() < 3)
+        {
+            FatalIOErrorInFunction(sd)
+                << "Entry 'normalStress " << e.normalStress << "': give at least"
+                << " 3 loads (the pressure law B dMean (R - 1)/(C + p*) has two"
+                << " parameters; replicas do not add pressures)" << nl
+                << exit(FatalIOError);
+        }
     }
     const auto inOpen = [&sd](const word& key, const scalar value, const scalar lo,
         const scalar hi, const char* meaning)
@@ -755,12 +763,14 @@ Foam::calibrationSettings::segregationCellSettings
 std::string Foam::calibrationSettings::segregationSettingsKey() const
 {
     const segregationEnvelope& e = segregation_;
-    // sigma_N and x are in the condition's name
+    // sigma_N and x are in the condition's name; the packing's phi is in
+    // neither the name nor the cell's key
     const sdf::dem::GravityShearRunSettings s =
         segregationCellSettings(1, 0, "");
     return
         sdf::store::settingsKey(s.cell, contactModel_)
-      + "; gravityShear g " + fmt(e.gravity) + " U " + fmt(e.wallSpeed)
+      + "; gravityShear phi " + fmt(e.phi)
+      + " g " + fmt(e.gravity) + " U " + fmt(e.wallSpeed)
       + " profileRelaxationTime " + fmt(e.profileRelaxationTime)
       + " heightRatio " + fmt(e.heightRatio)
       + " wallThickness " + fmt(e.wallThickness)

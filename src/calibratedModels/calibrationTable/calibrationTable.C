@@ -178,10 +178,11 @@ void Foam::calibrationTable::read()
         std::map<std::string, std::pair<std::int64_t, std::string>> sizeAtPoint;
         for (const sdf::store::ConditionRecord& record : contents.conditions)
         {
-            if (record.rheology)
+            if (record.rheology || record.segregation)
             {
-                // a rheology cell of the same store: not a transport
-                // condition (fitted apart, calibrateGranularMixture)
+                // a rheology cell or a sheared cell under gravity of the
+                // same store: not a transport condition (fitted apart,
+                // calibrateGranularMixture)
                 continue;
             }
             if (record.gammaDot)
