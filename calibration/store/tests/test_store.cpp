@@ -152,6 +152,71 @@ TEST(store, writesAndReadsBackACondition)
 }
 
 
+TEST(store, segregationCellsAreReadBackBesideTransportConditions)
+{
+    // a sheared cell under gravity beside a transport condition: its record read back
+    // attribute by attribute, no species or T asked of it, the transport one as before
+    const TemporaryDirectory dir;
+    const std::string h5 = dir.file("calibration.h5");
+    const sdf::dem::CellRunResult r = syntheticResult();
+    appendCondition(h5, "small", "large", "k", inputs(0.3, 0.4, 0.01, 1), r);
+
+    sdf::dem::GravityShearRunResult g;
+    g.settings.walls.normalStress = 368;
+    g.settings.walls.wallSpeed = 0.4;
+    g.settings.cell.particles = 3000;
+    sdf::dem::SegregationMeasurement& m = g.segregation;
+    m.fineDiameter = 1e-3; m.sizeRatio = 2; m.meanDiameter = 1.5e-3; m.solidsFraction = 0.62;
+    m.pressureNumber = 13.8; m.inertialNumber = 0.058;
+    m.early = {5.8e-5, 8.7e-6, 5}; m.earlyCoarseShare = 0.5; m.earlyShearRate = 17;
+    m.balance = {7.3e-5, 5.5e-6, 5}; m.coarseShare = 0.52;
+    m.shearRate = {17.7, 0.3, 5}; m.diffusivity = {1.9e-6, 1e-7, 5};
+    m.shearRateDiffusivity = {0.049, 0.0034, 5}; m.diffusiveShare = 0.058; m.topWallLoad = 1.0004;
+    ConditionInputs in;
+    in.name = segregationConditionName(368, 0.5, 1);
+    in.phi = 0.55;
+    in.x = 0.5;
+    in.normalStress = 368;
+    in.seed = 1;
+    appendSegregationCondition(h5, "small", "large", "gk", in, g);
+
+    const StoreContents contents = readStore(h5);
+    ASSERT_EQ(contents.conditions.size(), 2u);
+    const ConditionRecord& t = contents.conditions[0];   // sorted by name: phi... < segregation...
+    const ConditionRecord& c = contents.conditions[1];
+    EXPECT_EQ(t.name, "phi0.3_x0.4_T0.01_seed1");
+    EXPECT_FALSE(t.segregation);
+    EXPECT_EQ(t.fine.D, r.species[0].greenKubo.integral.value);
+    EXPECT_EQ(c.name, "segregation_sigma368_x0.5_seed1");
+    ASSERT_TRUE(c.segregation);
+    EXPECT_EQ(c.particles, 3000);
+    const SegregationRecord& s = *c.segregation;
+    EXPECT_EQ(s.normalStress, 368);
+    EXPECT_EQ(s.wallSpeed, 0.4);
+    EXPECT_EQ(s.pressureNumber, 13.8);
+    EXPECT_EQ(s.inertialNumber, 0.058);
+    EXPECT_EQ(s.early, 5.8e-5);
+    EXPECT_EQ(s.earlyError, 8.7e-6);
+    EXPECT_EQ(s.earlyShearRate, 17);
+    EXPECT_EQ(s.balance, 7.3e-5);
+    EXPECT_EQ(s.balanceError, 5.5e-6);
+    EXPECT_EQ(s.coarseShare, 0.52);
+    EXPECT_EQ(s.shearRate, 17.7);
+    EXPECT_EQ(s.diffusivityError, 1e-7);
+    EXPECT_EQ(s.shearRateDiffusivity, 0.049);
+    EXPECT_EQ(s.shearRateDiffusivityError, 0.0034);
+    EXPECT_EQ(s.diffusiveShare, 0.058);
+    EXPECT_EQ(s.topWallLoad, 1.0004);
+    EXPECT_EQ(storedSettingsKeys(h5).at(c.name), "gk");
+    // the layout: the group and the load on the condition
+    const sdf::io::File f = sdf::io::File::openReadOnly(h5);
+    const sdf::io::Group cg = f.root().openGroup("conditions/" + c.name);
+    EXPECT_EQ(cg.readDouble("normalStress"), 368);
+    EXPECT_EQ(cg.openGroup("segregation").readDouble("percolationLengthBalance"), 7.3e-5);
+    EXPECT_FALSE(cg.hasGroup("species/small"));
+}
+
+
 TEST(store, writesAndReadsBackTheCollisionStatistics)
 {
     // Collision counts and impact-energy histograms per species pair (breakage rates):
