@@ -462,42 +462,34 @@ Foam::label Foam::runConditions
             "condition " + std::to_string(f.index + 1) + "/"
           + std::to_string(conds.size())
           + " (" + c.text() + ")";
-        const bool segregationLeftOut =
-            c.segregation()
-         && (
-                !f.error.empty()
-             || !f.segregation.segregation.unreachedState().empty()
-            );
-        const bool leftOut =
-            c.rheology()
-         && (!f.error.empty() || !f.result.rheology.denseSteadyFlow());
-        if (segregationLeftOut)
+        // a rheology cell that is not a steady dense flow, a sheared cell
+        // under gravity not at its condition, or either refused by the
+        // engine: reported, never stored (the fit leaves it out)
+        std::string leftOutReason;
+        if (c.rheology() || c.segregation())
         {
-            // not at its condition, or not run: reported, never stored
-            progress << where.c_str() << " done in " << fmt(f.seconds).c_str()
-                << " s: left out of the segregation fit, not stored ("
-                << (
-                       f.error.empty()
-                     ? f.segregation.segregation.unreachedState()
-                     : "refused by the DEM engine: " + f.error
-                   ).c_str()
-                << ")" << endl;
-            doneCost += cost[f.index];
-            doneSeconds += f.seconds;
-        }
-        else if (leftOut)
-        {
-            // not a steady dense flow: reported, never stored as one
             const sdf::dem::RheologyResult& h = f.result.rheology;
+            if (!f.error.empty())
+            {
+                leftOutReason = "refused by the DEM engine: " + f.error;
+            }
+            else if (c.segregation())
+            {
+                leftOutReason = f.segregation.segregation.unreachedState();
+            }
+            else if (!h.denseSteadyFlow())
+            {
+                leftOutReason =
+                    (h.steady ? "" : "not steady: " + h.steadyCheck + "; ")
+                  + "regime " + h.regime + ": " + h.regimeReason;
+            }
+        }
+        if (!leftOutReason.empty())
+        {
             progress << where.c_str() << " done in " << fmt(f.seconds).c_str()
-                << " s: left out of the rheology fit, not stored ("
-                << (
-                       f.error.empty()
-                     ? (h.steady ? "" : "not steady: " + h.steadyCheck + "; ")
-                     + "regime " + h.regime + ": " + h.regimeReason
-                     : "refused by the DEM engine: " + f.error
-                   ).c_str()
-                << ")" << endl;
+                << " s: left out of the "
+                << (c.segregation() ? "segregation" : "rheology")
+                << " fit, not stored (" << leftOutReason.c_str() << ")" << endl;
             doneCost += cost[f.index];
             doneSeconds += f.seconds;
         }
