@@ -377,6 +377,56 @@ sys.exit(0 if abs(feed - packed) < 1e-9 else 1)
 PY
 }
 
+# The fill with the calibrated closures (Allrun -closures calibrated: the
+# segregation velocity and the shear-rate diffusivity's C of a
+# calibrateGranularMixture segregationVelocity file, here silo2D's, the same
+# 1 and 2 mm grains as this bin; with the calibrated rheology): the file
+# missing or given without the closures refused by name; the solver selects
+# percolation calibrated and the file's C; the check's balance (1e-8), the
+# bounds over every written time; and the fill segregates: the largest
+# |coarse share - feed's| of a cell above 0.05 where the same fill without
+# closures keeps it below 1e-6
+test_planar_silo_fill_calibrated_closures()
+{
+    local dir="$workRoot/planarSiloFillClosures" file="$projectDir/tutorials/silo2D/constant/segregationVelocity"
+    local shipped="$projectDir/tutorials/resources/calibratedRheology/granularCoefficients.shipped"
+    rm -rf "$dir"; mkdir -p "$dir"
+    cp -r "$validationDir/planarSiloFill" "$dir/"
+    local case="$dir/planarSiloFill" out mode C spread
+    out=$("$case/Allrun" -closures calibrated 2>&1) && { echo "no file was accepted"; return 1; }
+    echo "$out" | grep -F -- "-closures calibrated needs -segregationVelocity FILE" || { echo "$out"; return 1; }
+    out=$("$case/Allrun" -closures calibrated -segregationVelocity "$dir/none" 2>&1) \
+        && { echo "a missing file was accepted"; return 1; }
+    echo "$out" | grep -F -- "given: '$dir/none'" || { echo "$out"; return 1; }
+    out=$("$case/Allrun" -segregationVelocity "$file" 2>&1) && { echo "a file without the closures was accepted"; return 1; }
+    echo "$out" | grep -F -- "-segregationVelocity needs -closures calibrated" || { echo "$out"; return 1; }
+    C=$(foamDictionary -entry shearRateDiffusivity/C -value "$file") || return 1
+    for mode in none calibrated
+    do
+        "$case/Allclean" > /dev/null
+        if [ "$mode" = calibrated ]
+        then
+            "$case/Allrun" -fill 1 -granularCoefficients "$shipped" -closures calibrated \
+                -segregationVelocity "$file" > "$dir/log.$mode" 2>&1 || { tail -20 "$dir/log.$mode"; return 1; }
+            grep "Selecting percolation model calibrated" "$case/log.segregationDegradationFoam.fill" || return 1
+            grep -F "C $C;" "$case/constant/mechanismOverrides" || { echo "C $C not given to the diffusivity"; return 1; }
+            python3 -m sdfoam.fieldStats "$case" bounds --tol 1e-8 --packed "$(foamDictionary -entry rheology.packedFraction -value "$shipped")" || return 1
+        else
+            "$case/Allrun" -fill 1 -granularCoefficients "$shipped" > "$dir/log.$mode" 2>&1 \
+                || { tail -20 "$dir/log.$mode"; return 1; }
+        fi
+        spread=$(sed -n "s/.*largest |coarse share - feed's| of a cell //p" "$dir/log.$mode")
+        echo "$mode: largest |coarse share - feed's| of a cell $spread"
+        [ -n "$spread" ] || { echo "no spread in the check's output"; return 1; }
+        if [ "$mode" = calibrated ]
+        then
+            awk -v s="$spread" 'BEGIN { exit !(s > 0.05) }' || { echo "the calibrated closures did not segregate"; return 1; }
+        else
+            awk -v s="$spread" 'BEGIN { exit !(s < 1e-6) }' || { echo "the fill without closures segregated"; return 1; }
+        fi
+    done
+}
+
 # The fill's extremes: a single-species feed (no coarse appears anywhere); a
 # feed of pure coarse onto a bed of fines (each species' balance to 5e-8:
 # 1.25e-9 measured; the solids' to 1e-10, as every run's check); no feed
