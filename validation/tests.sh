@@ -399,7 +399,7 @@ test_planar_silo_fill_calibrated_closures()
         && { echo "a missing file was accepted"; return 1; }
     echo "$out" | grep -F -- "given: '$dir/none'" || { echo "$out"; return 1; }
     out=$("$case/Allrun" -segregationVelocity "$file" 2>&1) && { echo "a file without the closures was accepted"; return 1; }
-    echo "$out" | grep -F -- "-segregationVelocity needs -closures calibrated" || { echo "$out"; return 1; }
+    echo "$out" | grep -F -- "-segregationVelocity and -outsideEnvelope need -closures calibrated" || { echo "$out"; return 1; }
     C=$(foamDictionary -entry shearRateDiffusivity/C -value "$file") || return 1
     for mode in none calibrated
     do
@@ -409,6 +409,7 @@ test_planar_silo_fill_calibrated_closures()
             "$case/Allrun" -fill 1 -granularCoefficients "$shipped" -closures calibrated \
                 -segregationVelocity "$file" > "$dir/log.$mode" 2>&1 || { tail -20 "$dir/log.$mode"; return 1; }
             grep "Selecting percolation model calibrated" "$case/log.segregationDegradationFoam.fill" || return 1
+            grep "percolation calibrated: .*outside: clamp" "$case/log.segregationDegradationFoam.fill" || return 1
             grep -F "C $C;" "$case/constant/mechanismOverrides" || { echo "C $C not given to the diffusivity"; return 1; }
             python3 -m sdfoam.fieldStats "$case" bounds --tol 1e-8 --packed "$(foamDictionary -entry rheology.packedFraction -value "$shipped")" || return 1
         else
