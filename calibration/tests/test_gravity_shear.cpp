@@ -4,6 +4,7 @@
 // holding the load, the same bits on 1, 2 and 3 threads while it shears, and the
 // refusals. The segregation it measures: apps/gravityShearCell.cpp, docs/validation.md.
 #include "GravityShear.hpp"
+#include "GravityShearRun.hpp"
 #include "TestCells.hpp"
 
 #include <gtest/gtest.h>
@@ -226,4 +227,26 @@ TEST(GravityShear, RefusesBadSettingsByName)
             "entry 'wallThickness' must be positive and leave room for a flowing layer"
         )
     );
+}
+
+
+// I -> 0: a cell whose interior flows below the dense regime's floor (the rheology cell's
+// I 1e-4, where it reports a cell as jammed) is reported as quasi-static, so a
+// calibration leaves it out with that reason; just above the floor, and with the wall
+// loaded and sliding, it is a state the estimators read. The wall's checks come first.
+TEST(GravityShear, QuasiStaticCellIsReportedAsSuch)
+{
+    SegregationMeasurement m;
+    m.slidingStrainAtDrift = 2;
+    m.topWallLoad = 1.01;
+    m.inertialNumber = 2e-4;
+    EXPECT_FALSE(m.quasiStatic());
+    EXPECT_EQ(m.unreachedState(), "");
+    m.inertialNumber = 5e-5;
+    EXPECT_TRUE(m.quasiStatic());
+    EXPECT_TRUE(contains(m.unreachedState(), "quasi-static: I = 5e-05 < 0.0001"));
+    m.inertialNumber = 0;
+    EXPECT_TRUE(contains(m.unreachedState(), "quasi-static"));
+    m.topWallLoad = 0.5;
+    EXPECT_FALSE(contains(m.unreachedState(), "quasi-static"));
 }

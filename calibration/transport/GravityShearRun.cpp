@@ -240,6 +240,15 @@ std::string SegregationMeasurement::unreachedState() const
     {
         return topWallLoadWarning(topWallLoad);
     }
+    if (quasiStatic())
+    {
+        std::ostringstream why;
+        why << "quasi-static: I = " << inertialNumber << " < "
+            << RheologyResult::minimumInertialNumber << " in the interior, below the dense"
+            << " flow the law is fitted in (there w = S gammaDot (1 - c) vanishes with"
+            << " gammaDot; a faster wall or a lighter load)";
+        return why.str();
+    }
     return "";
 }
 

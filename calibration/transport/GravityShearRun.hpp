@@ -90,8 +90,14 @@ struct SegregationMeasurement
     //  drift's windows: else they were read in a flow still starting
     bool slidingBeforeDrift() const { return slidingStrainAtDrift >= 1; }
 
-    //- Both: the cell reached the state its estimators read (a calibration stores no
-    //  other); what is missing, or empty
+    //- Whether the interior's I is below the dense regime's floor (the rheology cell's
+    //  RheologyResult::minimumInertialNumber, one floor for both): a quasi-static layer
+    //  whose shear localises, where the law w = S gammaDot (1 - c) only says that the
+    //  drift vanishes with gammaDot, and S is not read
+    bool quasiStatic() const { return inertialNumber < RheologyResult::minimumInertialNumber; }
+
+    //- All three: the cell reached the state its estimators read (a calibration stores
+    //  no other); what is missing, or empty
     std::string unreachedState() const;
 };
 
