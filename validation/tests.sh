@@ -382,7 +382,9 @@ PY
 # calibrateGranularMixture segregationVelocity file, here silo2D's, the same
 # 1 and 2 mm grains as this bin; with the calibrated rheology): the file
 # missing or given without the closures refused by name; the solver selects
-# percolation calibrated and the file's C; the check's balance (1e-8), the
+# percolation calibrated, the file's C and -outsideEnvelope extrapolate (an
+# unknown policy, and the case's own copy, which Allclean would remove,
+# refused); the check's balance (1e-8), the
 # bounds over every written time; and the fill segregates: the largest
 # |coarse share - feed's| of a cell above 0.05 where the same fill without
 # closures keeps it below 1e-6
@@ -398,6 +400,14 @@ test_planar_silo_fill_calibrated_closures()
     out=$("$case/Allrun" -closures calibrated -segregationVelocity "$dir/none" 2>&1) \
         && { echo "a missing file was accepted"; return 1; }
     echo "$out" | grep -F -- "given: '$dir/none'" || { echo "$out"; return 1; }
+    out=$("$case/Allrun" -closures calibrated -segregationVelocity "$file" -outsideEnvelope bogus 2>&1) \
+        && { echo "an unknown -outsideEnvelope was accepted"; return 1; }
+    echo "$out" | grep -F -- "-outsideEnvelope: 'bogus' is not one of: clamp extrapolate error" || { echo "$out"; return 1; }
+    mkdir -p "$case/constant"; cp "$file" "$case/constant/segregationVelocity"
+    out=$("$case/Allrun" -closures calibrated -segregationVelocity "$case/constant/segregationVelocity" 2>&1) \
+        && { echo "the case's own copy was accepted (Allclean removes it)"; return 1; }
+    echo "$out" | grep -F -- "give a file outside the case's constant/" || { echo "$out"; return 1; }
+    [ -f "$case/constant/segregationVelocity" ] || { echo "the given file was removed"; return 1; }
     out=$("$case/Allrun" -segregationVelocity "$file" 2>&1) && { echo "a file without the closures was accepted"; return 1; }
     echo "$out" | grep -F -- "-segregationVelocity and -outsideEnvelope need -closures calibrated" || { echo "$out"; return 1; }
     C=$(foamDictionary -entry shearRateDiffusivity/C -value "$file") || return 1
@@ -407,9 +417,10 @@ test_planar_silo_fill_calibrated_closures()
         if [ "$mode" = calibrated ]
         then
             "$case/Allrun" -fill 1 -granularCoefficients "$shipped" -closures calibrated \
-                -segregationVelocity "$file" > "$dir/log.$mode" 2>&1 || { tail -20 "$dir/log.$mode"; return 1; }
+                -segregationVelocity "$file" -outsideEnvelope extrapolate > "$dir/log.$mode" 2>&1 \
+                || { tail -20 "$dir/log.$mode"; return 1; }
             grep "Selecting percolation model calibrated" "$case/log.segregationDegradationFoam.fill" || return 1
-            grep "percolation calibrated: .*outside: clamp" "$case/log.segregationDegradationFoam.fill" || return 1
+            grep "percolation calibrated: .*outside: extrapolate" "$case/log.segregationDegradationFoam.fill" || return 1
             grep -F "C $C;" "$case/constant/mechanismOverrides" || { echo "C $C not given to the diffusivity"; return 1; }
             python3 -m sdfoam.fieldStats "$case" bounds --tol 1e-8 --packed "$(foamDictionary -entry rheology.packedFraction -value "$shipped")" || return 1
         else
